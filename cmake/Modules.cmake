@@ -1,0 +1,22 @@
+# gridfree_module(NAME [DEPS module...] [LIBS target...] [SOURCES extra...])
+# A module is a folder src/NAME of the calling directory, built as the static
+# library gf_NAME. DEPS are other modules (lower layers only), LIBS external
+# targets. A module without sources yet is an INTERFACE library.
+function(gridfree_module name)
+  cmake_parse_arguments(M "" "" "DEPS;LIBS;SOURCES" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/${name}/*.cpp)
+  list(APPEND sources ${M_SOURCES})
+  set(deps "")
+  foreach(d IN LISTS M_DEPS)
+    list(APPEND deps gf_${d})
+  endforeach()
+  if(sources)
+    add_library(gf_${name} STATIC ${sources})
+    target_include_directories(gf_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/src)
+    target_link_libraries(gf_${name} PUBLIC ${deps} ${M_LIBS} PRIVATE gridfree_warnings)
+  else()
+    add_library(gf_${name} INTERFACE)
+    target_include_directories(gf_${name} INTERFACE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+    target_link_libraries(gf_${name} INTERFACE ${deps} ${M_LIBS})
+  endif()
+endfunction()

@@ -1,0 +1,18 @@
+// Project version and source revision, as recorded at build time.
+#pragma once
+
+#include <string>
+
+namespace gridfree {
+
+const char* project_version();   // "0.1.0"
+const char* source_revision();   // short git sha, or "unknown"
+
+// "gridfree 0.1.0 (abcdef1234)": what --version prints and results record.
+std::string version_string();
+
+// The part of the version that changes results: part of every job_hash.
+// Bump kSolverVersion whenever a change alters what the worker computes.
+inline constexpr const char* kSolverVersion = "gridfree-solver/1";
+
+}  // namespace gridfree

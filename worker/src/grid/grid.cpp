@@ -1,0 +1,29 @@
+#include "grid/grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridfree {
+
+double Grid::delta_star(double particle_diameter) const {
+  const double volume = length[0] * length[1] * length[2];
+  return std::cbrt(volume / static_cast<double>(cells())) / particle_diameter;
+}
+
+int Grid::cell_of(int axis, double x) const {
+  if (periodic[axis]) {
+    x = std::fmod(x, length[axis]);
+    if (x < 0) x += length[axis];
+  }
+  const int c = static_cast<int>(std::floor(x / h(axis)));
+  return std::clamp(c, 0, n[axis] - 1);
+}
+
+std::array<int, 3> cells_for_delta_star(const std::array<double, 3>& domain_dp, double delta_star) {
+  std::array<int, 3> cells{};
+  for (int a = 0; a < 3; ++a)
+    cells[a] = std::max(1, static_cast<int>(std::lround(domain_dp[a] / delta_star)));
+  return cells;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,40 @@
+// The worker's result document (CONTRACT.md §2, schemas/result.schema.json).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace gridfree {
+
+enum class SolveStatus { kConverged, kNotConverged, kDiverged, kInvalid, kFailed };
+
+std::string_view solve_status_name(SolveStatus s);  // "converged", ...
+
+struct JobResult {
+  std::string job_hash;
+  SolveStatus status = SolveStatus::kFailed;
+  std::string reason;                       // empty when converged
+  std::optional<double> dp_star;            // absent unless converged / a number exists
+  std::array<int, 3> cells{};
+  double delta_star = 0;
+  int iterations = 0;
+  double residual_continuity = 0;
+  double residual_momentum = 0;
+  double dp_star_change = 0;                // relative change of dp_star over the last check
+  double wall_s = 0;
+  double cpu_s = 0;
+  double peak_rss_mb = 0;
+  long particles = 0;
+  double max_solids_fraction = 0;
+  double mass_imbalance = 0;                // |Σ in − Σ out| / Σ in, mass flux
+  nlohmann::json extra = nlohmann::json::object();  // more diagnostics (filter stats, timings per phase)
+  std::string version;
+};
+
+nlohmann::json to_json(const JobResult& r);
+JobResult result_from_json(const nlohmann::json& j);  // throws InputError on a malformed document
+
+}  // namespace gridfree
