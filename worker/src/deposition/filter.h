@@ -8,6 +8,7 @@
 #include <array>
 #include <vector>
 
+#include "core/solve_stats.h"
 #include "grid/grid.h"
 
 namespace gridfree {
@@ -20,13 +21,6 @@ struct FilterSettings {
   int steps = 1;                            // backward-Euler steps over τ ∈ [0,1]
   double tolerance = 1e-10;                 // relative residual of each linear solve
   int max_iterations = 10000;               // per linear solve
-};
-
-struct LinearSolveStats {
-  int iterations = 0;
-  double initial_residual = 0;
-  double final_residual = 0;
-  bool converged = false;
 };
 
 struct FilterStats {

@@ -1,0 +1,45 @@
+// A 7-point finite-volume system on the cell grid of a Grid:
+//
+//   a_P φ_P = a_W φ_W + a_E φ_E + a_S φ_S + a_N φ_N + a_B φ_B + a_T φ_T + b_P
+//
+// (W/E = −x/+x, S/N = −y/+y, B/T = −z/+z neighbours). Neighbours across a
+// periodic axis wrap; across a non-periodic boundary the coefficient must be
+// 0 (boundary conditions are folded into a_P and b by the discretization).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "core/solve_stats.h"
+#include "grid/grid.h"
+
+namespace gridfree {
+
+struct Stencil7 {
+  explicit Stencil7(const Grid& g)
+      : grid(g), ap(g.cells(), 0.0), aw(g.cells(), 0.0), ae(g.cells(), 0.0), as(g.cells(), 0.0),
+        an(g.cells(), 0.0), ab(g.cells(), 0.0), at(g.cells(), 0.0), b(g.cells(), 0.0) {}
+  Grid grid;
+  std::vector<double> ap, aw, ae, as, an, ab, at, b;
+};
+
+// r = b + Σ a_nb φ_nb − a_P φ for every cell.
+void stencil_residual(const Stencil7& s, const std::vector<double>& phi, std::vector<double>& r);
+
+struct LinearSolverSettings {
+  double tolerance = 1e-8;   // on ||r|| / ||b|| (||r0|| when b = 0)
+  int max_iterations = 500;
+};
+
+// Symmetric systems (pressure correction, filter): conjugate gradients
+// preconditioned by aggregation multigrid; O(N) work per solve.
+LinearSolveStats solve_symmetric(const Stencil7& s, std::vector<double>& phi,
+                                 const LinearSolverSettings& settings);
+
+// Non-symmetric systems (momentum with convection): BiCGSTAB with a
+// Jacobi/ILU-type preconditioner.
+LinearSolveStats solve_general(const Stencil7& s, std::vector<double>& phi,
+                               const LinearSolverSettings& settings);
+
+}  // namespace gridfree
