@@ -6,12 +6,15 @@ WERROR    ?= OFF
 BUILD_TYPE ?= Release
 CTEST_ARGS ?=
 
-.PHONY: all deps configure build test test-unit demo bench clean
+.PHONY: all deps test-deps configure build test test-unit demo bench clean
 
 all: build
 
 deps:
 	@scripts/install-deps.sh
+
+test-deps:
+	@scripts/install-deps.sh test
 
 configure: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DGRIDFREE_WERROR=$(WERROR) >/dev/null
@@ -19,11 +22,11 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-test: build
-	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+test: test-deps build
+	@cd $(BUILD) && OMP_WAIT_POLICY=passive ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
 test-unit: build
-	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L unit
+	@cd $(BUILD) && OMP_WAIT_POLICY=passive ctest --output-on-failure -j $(JOBS) -L unit
 
 demo: build
 	@$(BUILD)/bin/gridfree run studies/quickstart.json --db gridfree.sqlite; status=$$?; \

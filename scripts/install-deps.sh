@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages gridfree needs to build, test and report.
+# Installs the Debian packages gridfree needs to build, test and report:
+#   scripts/install-deps.sh        build and run
+#   scripts/install-deps.sh test   also what the tests use
 # Idempotent: only missing packages are installed (needs root for that).
 set -euo pipefail
 
@@ -8,10 +10,10 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libsqlite3-dev sqlite3 libspdlog-dev
   libcli11-dev libgtest-dev libvalijson-dev
 )
-# Extra packages for the HTML rendering test: GRIDFREE_DEPS_EXTRA="chromium".
-if [[ -n "${GRIDFREE_DEPS_EXTRA:-}" ]]; then
-  read -r -a extra <<<"${GRIDFREE_DEPS_EXTRA}"
-  packages+=("${extra[@]}")
+# `install-deps.sh test` adds what only the tests need: headless Chromium
+# renders the HTML report once.
+if [[ "${1:-}" == "test" ]]; then
+  packages+=(chromium)
 fi
 
 missing=()

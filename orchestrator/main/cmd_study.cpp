@@ -1,8 +1,67 @@
-// gridfree validate|plan|run|submit|daemon|status|report|cancel (placeholder until implemented).
+// gridfree validate|plan|run|submit|daemon|status|report|cancel: registration
+// and the helpers they share (database, executor, scheduler options).
+#include "cmd_study.h"
+
+#include <thread>
+
+#include "core/input_error.h"
+#include "exec/local_executor.h"
+#include "exec/slurm_executor.h"
+#include "exec/worker_path.h"
 #include "commands.h"
+#include "store/owner.h"
 
 namespace gridfree::cli {
 
-void add_study_commands(CLI::App&, int&) {}
+void add_study_commands(CLI::App& app, int& exit_code) {
+  add_validate_command(app, exit_code);
+  add_plan_command(app, exit_code);
+  add_run_command(app, exit_code);
+  add_submit_command(app, exit_code);
+  add_daemon_command(app, exit_code);
+  add_status_command(app, exit_code);
+  add_report_command(app, exit_code);
+  add_cancel_command(app, exit_code);
+}
+
+int default_jobs() {
+  const unsigned n = std::thread::hardware_concurrency();
+  return n == 0 ? 1 : static_cast<int>(n);
+}
+
+std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(db, ec))
+    throw InputError("--db", "no database at '" + db.string() + "' (submit or run a study first)");
+  return std::make_unique<Store>(db, false);
+}
+
+std::unique_ptr<Executor> make_executor(const std::string& kind, const std::filesystem::path& db) {
+  const auto worker = default_worker_path();
+  if (kind == "local") {
+    std::error_code ec;
+    if (!std::filesystem::exists(worker, ec))
+      throw std::runtime_error("worker executable not found: " + worker.string() + " (set GRIDFREE_WORKER)");
+    return std::make_unique<LocalExecutor>(worker);
+  }
+  if (kind == "slurm") return std::make_unique<SlurmExecutor>(worker, runs_root_for(db));
+  throw InputError("--executor", "unknown executor '" + kind + "'; valid: local, slurm");
+}
+
+SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,
+                                   const std::filesystem::path& out_override) {
+  if (jobs < 1) throw InputError("-j", "needs at least 1 job at a time");
+  if (timeout_s < 0) throw InputError("--timeout", "must not be negative");
+  SchedulerOptions o;
+  o.workers = jobs;
+  o.threads_per_job = std::max(1, default_jobs() / jobs);
+  o.timeout_s = timeout_s;
+  o.runs_root = runs_root_for(db);
+  o.owner = this_process_owner();
+  o.report_dir = [out_override](const std::string& name) {
+    return out_override.empty() ? std::filesystem::path("reports") / name : out_override;
+  };
+  return o;
+}
 
 }  // namespace gridfree::cli

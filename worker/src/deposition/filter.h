@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "core/solve_stats.h"
@@ -36,5 +37,25 @@ std::array<double, 3> filter_diffusivity(const Grid& grid, const FilterSettings&
 
 // Filters `field` (one value per cell, Grid::index order) in place.
 FilterStats apply_filter(const Grid& grid, const FilterSettings& s, std::vector<double>& field);
+
+// The same filter for several fields on one grid: the step matrix and the
+// solver's multigrid hierarchy are built once, in the constructor, and reused
+// by every apply() (e.g. ε_s, β and the three components of βv̄ each outer
+// iteration). apply() gives exactly what apply_filter() gives.
+class DiffusionFilter {
+ public:
+  DiffusionFilter(const Grid& grid, const FilterSettings& s);
+  ~DiffusionFilter();
+  DiffusionFilter(DiffusionFilter&&) noexcept;
+  DiffusionFilter& operator=(DiffusionFilter&&) noexcept;
+
+  FilterStats apply(std::vector<double>& field);
+  const std::array<double, 3>& nu() const;
+  bool active() const;  // false when no axis diffuses: apply() is then a no-op
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace gridfree

@@ -2,7 +2,8 @@
 //
 // parse_job() validates a JSON document against the embedded schema and the
 // semantic rules (probes inside the domain, positive sizes, known names, ...)
-// and throws InputError naming every offending JSON path.
+// and throws InputError naming every offending JSON path. The case types
+// (CaseSpec, BoundarySpec, ParticleSource, ...) live in core/case_spec.h.
 #pragma once
 
 #include <array>
@@ -13,67 +14,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/case_spec.h"
+#include "core/input_error.h"
 #include "deposition/filter.h"
 #include "drag/drag_law.h"
-#include "core/input_error.h"
 #include "schemes/limiter.h"
 
 namespace gridfree {
-
-enum class BoundaryKind { kPeriodic, kWall, kMassInflow, kPressureOutflow };
-
-struct BoundarySpec {
-  BoundaryKind kind = BoundaryKind::kWall;
-  double superficial_velocity_cm_s = 0;  // mass_inflow
-  double pressure_dyn_cm2 = 0;           // pressure_outflow
-};
-
-struct GasSpec {
-  double density_g_cm3 = 1e-3;
-  double viscosity_g_cm_s = 2e-4;
-};
-
-// particles: exactly one of generator / file / uniform.
-struct GeneratorSpec {
-  std::string kind;          // "bursting_bubble" | "uniform_random" | "sscp_like"
-  nlohmann::json params;     // the whole generator object (kind-specific fields)
-};
-struct FileSpec {
-  std::filesystem::path path;  // resolved against the job/study file's folder
-  std::string format;          // "csv" | "mfix"
-};
-struct UniformSpec {
-  double solids_fraction = 0;
-};
-using ParticleSource = std::variant<GeneratorSpec, FileSpec, UniformSpec>;
-
-struct ParticleVelocitySpec {
-  double thermal_cm_s = 0;  // std of each velocity component; 0 = frozen
-  unsigned seed = 0;
-};
-
-struct ProbeSpec {
-  double y1_dp = 4;
-  double y2_dp = 104;
-};
-
-struct CaseSpec {
-  std::string name;
-  std::array<double, 3> domain_dp{};     // L* per direction (particle diameters)
-  double particle_diameter_cm = 0;
-  GasSpec gas;
-  std::array<double, 3> gravity_cm_s2{};
-  // boundaries[axis][side]: side 0 = low, 1 = high. Periodic on both sides or neither.
-  std::array<std::array<BoundarySpec, 2>, 3> boundaries{};
-  ParticleSource particles = UniformSpec{};
-  ParticleVelocitySpec particle_velocity;
-  ProbeSpec probes;
-
-  std::array<double, 3> domain_cm() const {
-    return {domain_dp[0] * particle_diameter_cm, domain_dp[1] * particle_diameter_cm,
-            domain_dp[2] * particle_diameter_cm};
-  }
-};
 
 enum class DepositionKind { kDiffusion, kCentroid };
 
@@ -106,14 +53,29 @@ struct JobSpec {
 
 // Parses a case object (shared by jobs and studies). `path` is the JSON
 // pointer of the object ("/case" in a job, "/cases/PC1" in a study);
-// `base_dir` resolves relative particle file paths.
+// `base_dir` resolves relative particle file paths. Checks the semantic rules
+// (probes inside the domain, particle file exists, generator parameters fit
+// the domain, ...) and adds every problem found to `problems`; does not throw
+// for user errors. Schema validation is the caller's job (parse_job does it).
 CaseSpec parse_case(const nlohmann::json& j, const std::string& path,
                     const std::filesystem::path& base_dir, ProblemList& problems);
 
-// Validates and parses a whole job document. Throws InputError.
+// Parses a numerics object; `domain_dp` turns grid.delta_star into cells.
+NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path,
+                            const std::array<double, 3>& domain_dp, ProblemList& problems);
+
+// Validates (schema, then semantics) and parses a whole job document.
+// Throws InputError listing every problem.
 JobSpec parse_job(const nlohmann::json& doc, const std::filesystem::path& base_dir);
 
-// Reads a JSON file; malformed JSON throws InputError with line and column.
+// read_json_file + parse_job with base_dir = the file's folder.
+JobSpec parse_job_file(const std::filesystem::path& file);
+
+// Reads a JSON file; malformed JSON throws InputError "file:line:col".
 nlohmann::json read_json_file(const std::filesystem::path& file);
+
+// Name <-> enum of the deposition settings ("diffusion", "seed", ...).
+std::string_view deposition_kind_name(DepositionKind kind);
+std::string_view filter_diffusivity_name(FilterDiffusivity d);
 
 }  // namespace gridfree

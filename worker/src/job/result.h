@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +13,7 @@ namespace gridfree {
 enum class SolveStatus { kConverged, kNotConverged, kDiverged, kInvalid, kFailed };
 
 std::string_view solve_status_name(SolveStatus s);  // "converged", ...
+std::optional<SolveStatus> solve_status_from_name(std::string_view name);
 
 struct JobResult {
   std::string job_hash;
@@ -34,7 +36,10 @@ struct JobResult {
   std::string version;
 };
 
+// The result document; non-finite numbers are written as null.
 nlohmann::json to_json(const JobResult& r);
-JobResult result_from_json(const nlohmann::json& j);  // throws InputError on a malformed document
+// Validates against schemas/result.schema.json, then reads; nulls become
+// NaN (dp_star: absent). Throws InputError on a malformed document.
+JobResult result_from_json(const nlohmann::json& j);
 
 }  // namespace gridfree

@@ -33,12 +33,18 @@ struct LinearSolverSettings {
 };
 
 // Symmetric systems (pressure correction, filter): conjugate gradients
-// preconditioned by aggregation multigrid; O(N) work per solve.
+// preconditioned by aggregation multigrid; O(N) work per solve. A system
+// with no Dirichlet part in any row (Σ a_nb = a_P everywhere, e.g. fully
+// periodic) is singular: the mean of b is ignored and φ returned with zero
+// mean. To reuse the multigrid hierarchy across calls, or to choose the
+// preconditioner, use SymmetricSolver (linalg/symmetric_solver.h).
 LinearSolveStats solve_symmetric(const Stencil7& s, std::vector<double>& phi,
                                  const LinearSolverSettings& settings);
 
-// Non-symmetric systems (momentum with convection): BiCGSTAB with a
-// Jacobi/ILU-type preconditioner.
+// Non-symmetric systems (momentum with convection): BiCGSTAB preconditioned
+// by a symmetric red-black Gauss–Seidel sweep (options: linalg/bicgstab.h).
+// Both solvers throw std::invalid_argument for a malformed stencil (wrong
+// array sizes, coupling across a non-periodic boundary).
 LinearSolveStats solve_general(const Stencil7& s, std::vector<double>& phi,
                                const LinearSolverSettings& settings);
 

@@ -1,6 +1,7 @@
 // A frozen particle: centre (cm), diameter (cm), velocity (cm/s).
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace gridfree {
@@ -14,6 +15,10 @@ struct Particle {
 struct ParticleSet {
   std::vector<Particle> particles;
   bool has_velocity = false;  // true when velocities were given or generated
+  // Provenance for messages: the file the set was read from (empty when
+  // generated) and, per particle, its 1-based line in that file.
+  std::string source;
+  std::vector<int> source_lines;
 };
 
 }  // namespace gridfree

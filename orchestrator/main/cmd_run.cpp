@@ -1,0 +1,128 @@
+// gridfree run | submit | daemon: put a study in the database and work the queue.
+//   run     = validate + submit + schedule that study until done + report
+//   submit  = validate + submit (a daemon or a later run does the work)
+//   daemon  = schedule every queued study until SIGINT/SIGTERM
+// Validation comes first: an invalid study never opens (or creates) the database.
+#include <unistd.h>
+
+#include <iostream>
+
+#include <spdlog/spdlog.h>
+
+#include "cmd_study.h"
+#include "core/exit_codes.h"
+#include "sched/series_finish.h"
+#include "sched/stop_signal.h"
+
+namespace gridfree::cli {
+namespace {
+
+struct RunOptions {
+  std::string study_file;
+  std::string db = kDefaultDb;
+  int jobs = default_jobs();
+  std::string executor = "local";
+  double timeout_s = 0;
+  std::string out;
+};
+
+SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy& ex) {
+  const SubmitResult r = store.submit(study, ex);
+  if (r.created)
+    spdlog::info("submitted '{}': {} series, {} jobs ({} new, {} already done)", study.name, ex.series.size(),
+                 r.jobs_total, r.jobs_new, r.jobs_reused);
+  else
+    spdlog::info("'{}' is already in the database: resuming", study.name);
+  return r;
+}
+
+int run_study(const RunOptions& ro) {
+  // 1. Validate before touching the database.
+  const Study study = parse_study(ro.study_file);
+  const ExpandedStudy ex = expand(study);
+  auto options = scheduler_options(ro.db, ro.jobs, ro.timeout_s, ro.out);
+  auto executor = make_executor(ro.executor, ro.db);
+  // 2. Submit (or resume).
+  Store store(ro.db, true);
+  const SubmitResult sub = submit_study(store, study, ex);
+  recover_stale_jobs(store);
+  // 3. Work the study until it is done.
+  StopSignals signals;
+  Progress progress(isatty(STDERR_FILENO) != 0);
+  options.study = sub.study_id;
+  options.stop_requested = [&signals] { return signals.requested(); };
+  options.progress = &progress;
+  const SchedulerSummary sum = run_scheduler(store, *executor, options);
+  progress.finish();
+  // 4. Report and exit code.
+  finish_ready_series(store, sub.study_id);
+  refresh_report(store, sub.study_id, options);
+  const auto st = store.statuses(sub.study_id).front();
+  std::cerr << "study " << st.name << ": " << st.status << " — " << st.converged << "/" << st.jobs
+            << " jobs converged, " << st.failed << " failed";
+  if (sum.interrupted) std::cerr << " (interrupted; run again to resume)";
+  std::cerr << "\nreport: " << (options.report_dir(st.name) / "report.html").string() << '\n';
+  if (sum.interrupted) return to_int(ExitCode::kInterrupted);
+  if (st.status == "done") return to_int(ExitCode::kOk);
+  return to_int(ExitCode::kNotConverged);
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("run", "submit a study and work it until done, then write its report");
+  auto ro = std::make_shared<RunOptions>();
+  sub->add_option("STUDY", ro->study_file, "study JSON file")->required();
+  sub->add_option("--db", ro->db, "SQLite database")->capture_default_str();
+  sub->add_option("-j,--jobs", ro->jobs, "jobs at a time (default: cores)");
+  sub->add_option("--executor", ro->executor, "local | slurm")->capture_default_str();
+  sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (0 = none)");
+  sub->add_option("--out", ro->out, "report folder (default reports/<study>)");
+  sub->callback([ro, &exit_code] { exit_code = run_study(*ro); });
+}
+
+void add_submit_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("submit", "validate a study and queue its jobs");
+  auto file = std::make_shared<std::string>();
+  auto db = std::make_shared<std::string>(kDefaultDb);
+  sub->add_option("STUDY", *file, "study JSON file")->required();
+  sub->add_option("--db", *db, "SQLite database")->capture_default_str();
+  sub->callback([file, db, &exit_code] {
+    const Study study = parse_study(*file);
+    const ExpandedStudy ex = expand(study);
+    Store store(*db, true);
+    const SubmitResult r = submit_study(store, study, ex);
+    std::cout << (r.created ? "submitted " : "already submitted ") << study.name << ": " << ex.series.size()
+              << " series, " << r.jobs_total << " jobs\n";
+    exit_code = to_int(ExitCode::kOk);
+  });
+}
+
+void add_daemon_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("daemon", "work every submitted study until SIGINT/SIGTERM");
+  auto db = std::make_shared<std::string>(kDefaultDb);
+  auto jobs = std::make_shared<int>(default_jobs());
+  auto executor_kind = std::make_shared<std::string>("local");
+  auto timeout = std::make_shared<double>(0);
+  sub->add_option("--db", *db, "SQLite database")->capture_default_str();
+  sub->add_option("-j,--jobs", *jobs, "jobs at a time (default: cores)");
+  sub->add_option("--executor", *executor_kind, "local | slurm")->capture_default_str();
+  sub->add_option("--timeout", *timeout, "per-job timeout in seconds (0 = none)");
+  sub->callback([=, &exit_code] {
+    auto options = scheduler_options(*db, *jobs, *timeout, {});
+    auto executor = make_executor(*executor_kind, *db);
+    Store store(*db, true);
+    recover_stale_jobs(store);
+    StopSignals signals;
+    Progress progress(false);
+    options.stop_when_idle = false;
+    options.stop_requested = [&signals] { return signals.requested(); };
+    options.progress = &progress;
+    spdlog::info("daemon: working {} with {} job(s) at a time (SIGINT/SIGTERM stops)", *db, *jobs);
+    const SchedulerSummary sum = run_scheduler(store, *executor, options);
+    spdlog::info("daemon: stopped; {} job(s) finished this session, in-flight jobs requeued", sum.finished);
+    exit_code = to_int(ExitCode::kOk);
+  });
+}
+
+}  // namespace gridfree::cli

@@ -1,0 +1,90 @@
+// gridfree status [STUDY] [--json] | report STUDY [--out DIR] | cancel STUDY
+#include <iostream>
+
+#include "cmd_study.h"
+#include "core/exit_codes.h"
+#include "core/input_error.h"
+#include "sched/series_finish.h"
+
+namespace gridfree::cli {
+namespace {
+
+long long require_study(Store& store, const std::string& name) {
+  auto id = store.study_id(name);
+  if (!id) throw InputError("STUDY", "no study named '" + name + "' in " + store.file().string());
+  return *id;
+}
+
+nlohmann::json status_json(const StudyStatus& s) {
+  return {{"name", s.name},          {"status", s.status},       {"submitted_at", s.submitted_at},
+          {"finished_at", s.finished_at}, {"design", s.design},  {"jobs", s.jobs},
+          {"queued", s.queued},      {"running", s.running},     {"done", s.done},
+          {"failed", s.failed},      {"cancelled", s.cancelled}, {"converged", s.converged},
+          {"series", s.series},      {"series_done", s.series_done}};
+}
+
+}  // namespace
+
+void add_status_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("status", "studies and their jobs");
+  auto name = std::make_shared<std::string>();
+  auto db = std::make_shared<std::string>(kDefaultDb);
+  auto json = std::make_shared<bool>(false);
+  sub->add_option("STUDY", *name, "one study (default: all)");
+  sub->add_option("--db", *db, "SQLite database")->capture_default_str();
+  sub->add_flag("--json", *json, "print JSON");
+  sub->callback([=, &exit_code] {
+    auto store = open_existing_store(*db);
+    std::optional<long long> id;
+    if (!name->empty()) id = require_study(*store, *name);
+    const auto rows = store->statuses(id);
+    if (*json) {
+      nlohmann::json out = nlohmann::json::array();
+      for (const auto& s : rows) out.push_back(status_json(s));
+      std::cout << out.dump(2) << '\n';
+    } else {
+      std::printf("%-28s %-10s %6s %6s %7s %6s %6s %9s %8s\n", "study", "status", "jobs", "queued", "running",
+                  "done", "failed", "converged", "series");
+      for (const auto& s : rows)
+        std::printf("%-28s %-10s %6d %6d %7d %6d %6d %9d %4d/%-3d\n", s.name.c_str(), s.status.c_str(), s.jobs,
+                    s.queued, s.running, s.done, s.failed, s.converged, s.series_done, s.series);
+    }
+    exit_code = to_int(ExitCode::kOk);
+  });
+}
+
+void add_report_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("report", "rewrite a study's report from the database");
+  auto name = std::make_shared<std::string>();
+  auto db = std::make_shared<std::string>(kDefaultDb);
+  auto out = std::make_shared<std::string>();
+  sub->add_option("STUDY", *name, "study name")->required();
+  sub->add_option("--db", *db, "SQLite database")->capture_default_str();
+  sub->add_option("--out", *out, "report folder (default reports/<study>)");
+  sub->callback([=, &exit_code] {
+    auto store = open_existing_store(*db);
+    const long long id = require_study(*store, *name);
+    finish_ready_series(*store, id);
+    const std::filesystem::path dir = out->empty() ? std::filesystem::path("reports") / *name : std::filesystem::path(*out);
+    const auto html = write_report(*store, id, dir);
+    std::cout << "report: " << html.string() << '\n';
+    exit_code = to_int(ExitCode::kOk);
+  });
+}
+
+void add_cancel_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("cancel", "cancel a study's queued jobs");
+  auto name = std::make_shared<std::string>();
+  auto db = std::make_shared<std::string>(kDefaultDb);
+  sub->add_option("STUDY", *name, "study name")->required();
+  sub->add_option("--db", *db, "SQLite database")->capture_default_str();
+  sub->callback([=, &exit_code] {
+    auto store = open_existing_store(*db);
+    require_study(*store, *name);
+    store->cancel(*name);
+    std::cout << "cancelled " << *name << " (running jobs finish; submit again to resume)\n";
+    exit_code = to_int(ExitCode::kOk);
+  });
+}
+
+}  // namespace gridfree::cli

@@ -1,0 +1,41 @@
+// Helpers shared by the study subcommands (validate, plan, run, submit,
+// daemon, status, report, cancel) and their registration functions.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "exec/executor.h"
+#include "sched/scheduler.h"
+#include "store/store.h"
+#include "study/study.h"
+
+namespace gridfree::cli {
+
+void add_validate_command(CLI::App& app, int& exit_code);
+void add_plan_command(CLI::App& app, int& exit_code);
+void add_run_command(CLI::App& app, int& exit_code);
+void add_submit_command(CLI::App& app, int& exit_code);
+void add_daemon_command(CLI::App& app, int& exit_code);
+void add_status_command(CLI::App& app, int& exit_code);
+void add_report_command(CLI::App& app, int& exit_code);
+void add_cancel_command(CLI::App& app, int& exit_code);
+
+inline constexpr const char* kDefaultDb = "gridfree.sqlite";
+
+int default_jobs();  // number of cores
+
+// Opens an existing database (throws InputError naming --db if missing).
+std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db);
+
+// The executor named by --executor ("local" | "slurm"); throws InputError otherwise.
+std::unique_ptr<Executor> make_executor(const std::string& kind, const std::filesystem::path& db);
+
+// Scheduler options common to run and daemon.
+SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,
+                                   const std::filesystem::path& out_override);
+
+}  // namespace gridfree::cli

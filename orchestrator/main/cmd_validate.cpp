@@ -1,0 +1,43 @@
+// gridfree validate STUDY  and  gridfree plan STUDY [--json] [-j N]:
+// read-only; nothing is written anywhere.
+#include <iostream>
+
+#include "cmd_study.h"
+#include "core/exit_codes.h"
+#include "study/study_plan.h"
+
+namespace gridfree::cli {
+
+void add_validate_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("validate", "check a study file: every problem with its JSON path");
+  auto file = std::make_shared<std::string>();
+  sub->add_option("STUDY", *file, "study JSON file")->required();
+  sub->callback([file, &exit_code] {
+    const Study study = parse_study(*file);
+    const ExpandedStudy ex = expand(study);
+    std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
+    exit_code = to_int(ExitCode::kOk);
+  });
+}
+
+void add_plan_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("plan", "jobs, series, cells, estimated memory and time");
+  auto file = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
+  auto jobs = std::make_shared<int>(default_jobs());
+  sub->add_option("STUDY", *file, "study JSON file")->required();
+  sub->add_flag("--json", *json, "print the plan as JSON");
+  sub->add_option("-j,--jobs", *jobs, "jobs at a time (for the wall-time estimate)");
+  sub->callback([file, json, jobs, &exit_code] {
+    const Study study = parse_study(*file);
+    const ExpandedStudy ex = expand(study);
+    const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
+    if (*json)
+      std::cout << plan_to_json(plan).dump(2) << '\n';
+    else
+      std::cout << "study " << study.name << ": " << study.design_description() << "\n" << plan_to_table(plan);
+    exit_code = to_int(ExitCode::kOk);
+  });
+}
+
+}  // namespace gridfree::cli

@@ -1,0 +1,73 @@
+// Shared executor helpers: run directories, the worker command line, exit descriptions.
+#include "exec/executor.h"
+
+#include <csignal>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <sstream>
+
+namespace gridfree {
+
+std::string describe(const JobExit& e) {
+  switch (e.how) {
+    case JobExit::How::kExited:
+      return "exit " + std::to_string(e.code);
+    case JobExit::How::kSignaled: {
+      const char* name = sigabbrev_np(e.signal);
+      return "killed by signal " + std::to_string(e.signal) + (name != nullptr ? std::string(" (SIG") + name + ")" : "");
+    }
+    case JobExit::How::kTimedOut:
+      return "timed out" + (e.detail.empty() ? "" : ": " + e.detail);
+    case JobExit::How::kKilled:
+      return "killed (shutdown)";
+    case JobExit::How::kLaunchFailed:
+      return "could not start the worker: " + e.detail;
+    case JobExit::How::kLost:
+      return "lost: " + e.detail;
+  }
+  return "unknown";
+}
+
+std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
+                                        int threads) {
+  return {worker.string(), "solve", (run_dir / "job.json").string(), "-o", (run_dir / "result.json").string(),
+          "--threads", std::to_string(threads < 1 ? 1 : threads), "-q"};
+}
+
+std::filesystem::path runs_root_for(const std::filesystem::path& db_file) {
+  auto abs = std::filesystem::absolute(db_file);
+  return abs.parent_path() / (abs.filename().string() + ".runs");
+}
+
+std::filesystem::path prepare_run_dir(const std::filesystem::path& runs_root, const std::string& job_hash,
+                                      const std::string& job_json) {
+  const auto dir = runs_root / job_hash;
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove(dir / "result.json");
+  const auto tmp = dir / "job.json.tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << job_json << '\n';
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  std::filesystem::rename(tmp, dir / "job.json");
+  return dir;
+}
+
+std::string tail_of_file(const std::filesystem::path& file, int lines) {
+  std::ifstream in(file);
+  if (!in) return "";
+  std::deque<std::string> last;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    last.push_back(line);
+    if (static_cast<int>(last.size()) > lines) last.pop_front();
+  }
+  std::string out;
+  for (const auto& l : last) out += (out.empty() ? "" : " | ") + l;
+  return out.size() > 600 ? out.substr(out.size() - 600) : out;
+}
+
+}  // namespace gridfree

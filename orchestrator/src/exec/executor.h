@@ -1,0 +1,66 @@
+// The seam between the scheduler and wherever jobs run (ninja's
+// CommandRunner): start a job, wait for any one to finish, kill them all.
+// Implementations: LocalExecutor (child processes), SlurmExecutor (sbatch),
+// and a fake in the tests.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gridfree {
+
+struct JobLaunch {
+  long long job_id = 0;
+  std::string job_hash;
+  std::filesystem::path run_dir;   // holds job.json; result.json and worker.log go here
+  int threads = 1;                 // --threads for the worker
+  double timeout_s = 0;            // 0 = none
+};
+
+struct JobExit {
+  enum class How { kExited, kSignaled, kTimedOut, kKilled, kLaunchFailed, kLost };
+  long long job_id = 0;
+  How how = How::kExited;
+  int code = 0;                    // exit code (kExited)
+  int signal = 0;                  // kSignaled
+  std::string detail;              // what happened, in words
+  std::filesystem::path run_dir;
+  double wall_s = 0;
+};
+
+std::string describe(const JobExit& e);  // "exit 3", "killed by signal 11 (SIGSEGV)", ...
+
+class Executor {
+ public:
+  virtual ~Executor() = default;
+  // Starts a job; a launch failure comes back from wait_any as kLaunchFailed.
+  virtual void start(const JobLaunch& job) = 0;
+  // Waits up to timeout_s for one job to finish; nullopt when none did.
+  virtual std::optional<JobExit> wait_any(double timeout_s) = 0;
+  // Kills every job in flight (their process groups / cancels them), reaps
+  // them and returns their ids.
+  virtual std::vector<long long> kill_all() = 0;
+  virtual std::size_t in_flight() const = 0;
+  // An id that can be used to find or kill the job after a restart ("" if none).
+  virtual std::string external_id(long long job_id) const = 0;
+};
+
+// The worker command line (CONTRACT.md §2) for a run directory.
+std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
+                                        int threads);
+
+// <db>.runs/<job_hash>/ with job.json written (atomically) and any old
+// result.json removed.
+std::filesystem::path prepare_run_dir(const std::filesystem::path& runs_root, const std::string& job_hash,
+                                      const std::string& job_json);
+
+// "<db file>.runs" beside the database.
+std::filesystem::path runs_root_for(const std::filesystem::path& db_file);
+
+// Last `lines` lines of a text file (for error messages), "" if unreadable.
+std::string tail_of_file(const std::filesystem::path& file, int lines = 5);
+
+}  // namespace gridfree

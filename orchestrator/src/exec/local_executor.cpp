@@ -1,0 +1,184 @@
+// LocalExecutor: posix_spawn + process groups + waitpid polling (see local_executor.h).
+#include "exec/local_executor.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace gridfree {
+namespace {
+
+std::string host_name() {
+  char buf[256] = {};
+  if (gethostname(buf, sizeof buf - 1) != 0) return "localhost";
+  return buf;
+}
+
+std::string start_time(long pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(in, line)) return "";
+  const auto close = line.rfind(')');
+  if (close == std::string::npos || close + 2 > line.size()) return "";
+  std::istringstream rest(line.substr(close + 2));
+  std::string field;
+  for (int i = 3; i <= 22 && (rest >> field); ++i)
+    if (i == 22) return field;
+  return "";
+}
+
+}  // namespace
+
+std::string process_identity(pid_t pid) {
+  return host_name() + ":" + std::to_string(pid) + ":" + start_time(pid);
+}
+
+bool kill_process_group_if_alive(const std::string& identity) {
+  const auto a = identity.find(':');
+  const auto b = identity.find(':', a == std::string::npos ? 0 : a + 1);
+  if (a == std::string::npos || b == std::string::npos || identity.substr(0, a) != host_name()) return false;
+  long pid = 0;
+  try {
+    pid = std::stol(identity.substr(a + 1, b - a - 1));
+  } catch (...) {
+    return false;
+  }
+  const std::string started = identity.substr(b + 1);
+  if (pid <= 1 || started.empty() || start_time(pid) != started) return false;
+  return killpg(static_cast<pid_t>(pid), SIGKILL) == 0;
+}
+
+LocalExecutor::~LocalExecutor() { kill_all(); }
+
+void LocalExecutor::start(const JobLaunch& job) {
+  const auto argv_s = worker_command(worker_, job.run_dir, job.threads);
+  std::vector<char*> argv;
+  for (const auto& a : argv_s) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const std::string log = (job.run_dir / "worker.log").string();
+
+  posix_spawn_file_actions_t fa;
+  posix_spawnattr_t attr;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawnattr_init(&attr);
+  posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGHUP, SIGCHLD}) sigaddset(&defaults, s);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setpgroup(&attr, 0);  // its own process group, led by the worker
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, argv[0], &fa, &attr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
+  if (rc != 0) {
+    JobExit e;
+    e.job_id = job.job_id;
+    e.how = JobExit::How::kLaunchFailed;
+    e.detail = worker_.string() + ": " + std::strerror(rc);
+    e.run_dir = job.run_dir;
+    failed_launches_.push_back(std::move(e));
+    return;
+  }
+  Child c;
+  c.job_id = job.job_id;
+  c.run_dir = job.run_dir;
+  c.started = Clock::now();
+  c.timeout_s = job.timeout_s;
+  if (job.timeout_s > 0)
+    c.deadline = c.started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(job.timeout_s));
+  running_[pid] = std::move(c);
+}
+
+std::string LocalExecutor::external_id(long long job_id) const {
+  for (const auto& [pid, c] : running_)
+    if (c.job_id == job_id) return "local:" + process_identity(pid);
+  return "";
+}
+
+void LocalExecutor::enforce_deadlines() {
+  const auto now = Clock::now();
+  for (auto& [pid, c] : running_) {
+    if (!c.timed_out && c.deadline && now >= *c.deadline) {
+      killpg(pid, SIGKILL);
+      c.timed_out = true;
+    }
+  }
+}
+
+std::optional<JobExit> LocalExecutor::reap_one() {
+  for (auto it = running_.begin(); it != running_.end(); ++it) {
+    int status = 0;
+    const pid_t r = waitpid(it->first, &status, WNOHANG);
+    if (r == 0) continue;
+    JobExit e;
+    e.job_id = it->second.job_id;
+    e.run_dir = it->second.run_dir;
+    e.wall_s = std::chrono::duration<double>(Clock::now() - it->second.started).count();
+    if (r < 0) {
+      e.how = JobExit::How::kLost;
+      e.detail = std::strerror(errno);
+    } else if (it->second.timed_out) {
+      e.how = JobExit::How::kTimedOut;
+      e.detail = "no result after " + std::to_string(static_cast<long>(it->second.timeout_s)) + " s";
+    } else if (WIFEXITED(status)) {
+      e.how = JobExit::How::kExited;
+      e.code = WEXITSTATUS(status);
+    } else {
+      e.how = JobExit::How::kSignaled;
+      e.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    }
+    // Anything the worker left in its group goes with it.
+    killpg(it->first, SIGKILL);
+    running_.erase(it);
+    return e;
+  }
+  return std::nullopt;
+}
+
+std::optional<JobExit> LocalExecutor::wait_any(double timeout_s) {
+  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s));
+  for (;;) {
+    if (!failed_launches_.empty()) {
+      JobExit e = std::move(failed_launches_.front());
+      failed_launches_.erase(failed_launches_.begin());
+      return e;
+    }
+    enforce_deadlines();
+    if (auto e = reap_one()) return e;
+    if (running_.empty() || Clock::now() >= until) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+std::vector<long long> LocalExecutor::kill_all() {
+  std::vector<long long> ids;
+  for (auto& [pid, c] : running_) {
+    killpg(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ids.push_back(c.job_id);
+  }
+  running_.clear();
+  for (const auto& e : failed_launches_) ids.push_back(e.job_id);
+  failed_launches_.clear();
+  return ids;
+}
+
+}  // namespace gridfree

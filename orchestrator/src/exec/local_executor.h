@@ -1,0 +1,53 @@
+// Runs workers as child processes on this machine. Each worker gets its own
+// process group (so a timeout or shutdown kills it and anything it started,
+// and a terminal's Ctrl-C reaches only the orchestrator), stdin from
+// /dev/null, stdout+stderr into <run_dir>/worker.log. Finished children are
+// found by waitpid(WNOHANG) polling; timeouts kill the whole group.
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <map>
+
+#include "exec/executor.h"
+
+namespace gridfree {
+
+class LocalExecutor : public Executor {
+ public:
+  explicit LocalExecutor(std::filesystem::path worker) : worker_(std::move(worker)) {}
+  ~LocalExecutor() override;
+
+  void start(const JobLaunch& job) override;
+  std::optional<JobExit> wait_any(double timeout_s) override;
+  std::vector<long long> kill_all() override;
+  std::size_t in_flight() const override { return running_.size() + failed_launches_.size(); }
+  std::string external_id(long long job_id) const override;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  struct Child {
+    long long job_id = 0;
+    std::filesystem::path run_dir;
+    Clock::time_point started;
+    std::optional<Clock::time_point> deadline;
+    double timeout_s = 0;
+    bool timed_out = false;
+  };
+  std::optional<JobExit> reap_one();
+  void enforce_deadlines();
+
+  std::filesystem::path worker_;
+  std::map<pid_t, Child> running_;
+  std::vector<JobExit> failed_launches_;
+};
+
+// "host:pid:starttime" of a process (same format as a store owner).
+std::string process_identity(pid_t pid);
+
+// Kills the process group led by the process named by `identity` if that
+// exact process (same start time) still runs on this host. True if killed.
+bool kill_process_group_if_alive(const std::string& identity);
+
+}  // namespace gridfree

@@ -1,0 +1,94 @@
+// Top-level extrapolation of one series (see extrapolation.h).
+#include "extrap/extrapolation.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/input_error.h"
+#include "extrap/eh14.h"
+#include "extrap/fm_uncertainty.h"
+#include "extrap/gci.h"
+
+namespace gridfree {
+namespace {
+
+// Fewer grids leave no degree of freedom for σ (n − 3 = 0).
+constexpr std::size_t kMinGrids = 4;
+
+// Constant data: every fit is the constant itself and the error estimate is 0.
+void constant_result(const Series& s, ExtrapolationResult& out) {
+  const double f0 = s.f.front();
+  out.method = "constant";
+  out.f0 = f0;
+  out.sigma_re = 0.0;
+  out.fs = 1.25;
+  out.power = FitSummary{};
+  out.power->f0 = f0;
+  out.power->c = 0.0;
+  out.power->sigma = 0.0;
+  out.power->p_found = false;
+  out.mixed = FitSummary{};
+  out.mixed->f0 = f0;
+  out.mixed->c1 = 0.0;
+  out.mixed->c2 = 0.0;
+  out.mixed->sigma = 0.0;
+  for (auto& g : out.grids) {
+    g.fhat = g.f;
+    g.u = 0.0;
+    g.rde = 0.0;
+  }
+  out.notes.push_back("f does not change with h: no discretization error is visible, U = 0");
+}
+
+}  // namespace
+
+void validate_options(const ExtrapolationOptions& opts) {
+  ProblemList problems;
+  if (!std::isfinite(opts.p_low) || !std::isfinite(opts.p_high) || !(opts.p_low < opts.p_high))
+    problems.add("--p-range", "needs two finite numbers lo < hi, got " + std::to_string(opts.p_low) +
+                                  " " + std::to_string(opts.p_high));
+  if (!(opts.search.p_min > 0 && opts.search.p_min < opts.search.p_max) ||
+      !std::isfinite(opts.search.p_max))
+    problems.add("p search range", "needs 0 < p_min < p_max");
+  if (opts.search.points_per_side < 3) problems.add("p search points", "needs at least 3 points");
+  problems.throw_if_any();
+}
+
+ExtrapolationMethod parse_method(const std::string& name, const std::string& where) {
+  if (name == "fm") return ExtrapolationMethod::kFm;
+  if (name == "eh14") return ExtrapolationMethod::kEh14;
+  throw InputError(where, "unknown extrapolation method \"" + name + "\"; valid: fm, eh14");
+}
+
+ExtrapolationResult extrapolate(const std::vector<double>& h, const std::vector<double>& f,
+                                const ExtrapolationOptions& opts) {
+  validate_options(opts);
+  return extrapolate(make_series(h, f), opts);
+}
+
+ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opts) {
+  ExtrapolationResult out;
+  for (std::size_t i = 0; i < s.size(); ++i) out.grids.push_back({s.h[i], s.f[i], {}, {}, {}});
+  out.gci = gci_triplets(s);
+  if (s.size() >= 2) out.data_range = data_range(s.f);
+
+  if (s.size() < kMinGrids) {
+    out.status = "insufficient_grids";
+    out.power = FitSummary{};
+    out.mixed = FitSummary{};
+    out.notes.push_back("fewer than 4 grids: no least-squares fit and no uncertainty estimate "
+                        "(the three-grid GCI is still reported)");
+    return out;
+  }
+  if (is_constant(s.f)) {
+    constant_result(s, out);
+    return out;
+  }
+  if (opts.method == ExtrapolationMethod::kEh14)
+    eh14_extrapolate(s, opts, out);
+  else
+    fm_extrapolate(s, opts, out);
+  return out;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,60 @@
+// Options and result of extrapolating one series (PHYSICS.md §8, CONTRACT.md §4).
+// Numbers that cannot be computed are empty optionals (JSON null).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "extrap/gci.h"
+#include "extrap/power_fit.h"
+#include "extrap/series.h"
+
+namespace gridfree {
+
+enum class ExtrapolationMethod {
+  kFm,    // Fullmer & Musser (2018), PHYSICS.md §8 (default)
+  kEh14,  // Eça & Hoekstra (2014), full procedure
+};
+
+struct ExtrapolationOptions {
+  ExtrapolationMethod method = ExtrapolationMethod::kFm;
+  // Accepted observed orders: FM uses the power law iff p_low ≤ p ≤ p_high;
+  // EH14 uses Fs = 1.25 iff p_low ≤ p < p_high (and σ < Δφ).
+  double p_low = 0.5, p_high = 2.1;
+  Weighting weights = Weighting::kInverseH;  // FM fits (EH14 tries both)
+  PowerSearch search;                        // p scan range and density
+};
+
+// One fit as reported under "fits". Unused members stay empty.
+struct FitSummary {
+  std::optional<double> f0, p, c, c1, c2, sigma;
+  std::optional<bool> p_found;   // power law only
+  std::optional<bool> weighted;  // EH14 only: which of the two variants won
+};
+
+struct GridUncertainty {
+  double h = 0, f = 0;
+  std::optional<double> fhat, u, rde;
+};
+
+// Which rules of EH14 applied (EH14 Appendix A).
+struct Eh14Branch {
+  std::string order;           // low_order | expected_order | high_order | no_order
+  std::string scatter;         // sigma_below_data_range | sigma_at_least_data_range
+  std::string error_estimate;  // fit used for ε_φ: power|first|second|mixed _ weighted|unweighted
+  std::optional<double> p;     // observed order of the selected power-law fit
+};
+
+struct ExtrapolationResult {
+  std::string status = "ok";           // ok | insufficient_grids
+  std::optional<std::string> method;   // power | mixed | constant | eh14_<fit>_<weighting>
+  std::optional<double> f0, p, sigma_re, data_range, fs, sigma_over_range;
+  std::optional<FitSummary> power, mixed, first, second;  // first/second: EH14 only
+  std::vector<GridUncertainty> grids;  // h ascending
+  std::vector<GciTriplet> gci;         // consecutive triplets, finest first
+  std::optional<Eh14Branch> eh14;
+  std::vector<std::string> notes;      // plain-language remarks for reports
+};
+
+}  // namespace gridfree

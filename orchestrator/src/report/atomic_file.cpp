@@ -1,0 +1,47 @@
+// Atomic file writing: temp file + rename (see atomic_file.h).
+#include "report/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+
+namespace gridfree {
+
+void write_file_atomically(const std::filesystem::path& target, std::string_view content) {
+  namespace fs = std::filesystem;
+  // Unique per process and thread, so concurrent writers never share a temp file.
+  const auto tid = std::hash<std::thread::id>{}(std::this_thread::get_id());
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(tid % 1000000);
+  const fs::path temp = target.parent_path() / name;
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      throw std::runtime_error("cannot write " + temp.string() + ": " + std::strerror(errno));
+    }
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temp, ignored);
+      throw std::runtime_error("cannot write " + temp.string() + ": write failed");
+    }
+  }
+  std::error_code ec;
+  fs::rename(temp, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    throw std::runtime_error("cannot rename " + temp.string() + " to " + target.string() + ": " + ec.message());
+  }
+}
+
+}  // namespace gridfree

@@ -1,0 +1,53 @@
+// One-factor pairs of series and their relative differences (see differences.h).
+#include "report/differences.h"
+
+#include <cmath>
+
+#include "report/text_format.h"
+
+namespace gridfree {
+
+std::optional<double> relative_difference(double a, double b) {
+  if (!std::isfinite(a) || !std::isfinite(b) || a + b == 0) return std::nullopt;
+  return 2.0 * std::abs(a - b) / std::abs(a + b);
+}
+
+std::vector<std::pair<std::string, std::string>> series_factors(const SeriesData& series) {
+  return {{"case", series.case_name},
+          {"convection", series.convection},
+          {"fwhm_dp", format_g(series.fwhm_dp, 10)},
+          {"drag", series.drag},
+          {"deposition", series.deposition.empty() ? "diffusion" : series.deposition}};
+}
+
+std::vector<SeriesDifference> one_factor_differences(const std::vector<SeriesSummary>& series) {
+  std::vector<SeriesDifference> out;
+  for (std::size_t a = 0; a < series.size(); ++a) {
+    const auto fa = series_factors(series[a].series);
+    for (std::size_t b = a + 1; b < series.size(); ++b) {
+      const auto fb = series_factors(series[b].series);
+      int differing = 0;
+      std::size_t which = 0;
+      for (std::size_t k = 0; k < fa.size(); ++k) {
+        if (fa[k].second != fb[k].second) {
+          ++differing;
+          which = k;
+        }
+      }
+      if (differing != 1) continue;
+      SeriesDifference d;
+      d.factor = fa[which].first;
+      d.value_a = fa[which].second;
+      d.value_b = fb[which].second;
+      d.a = a;
+      d.b = b;
+      d.f0_a = series[a].f0();
+      d.f0_b = series[b].f0();
+      if (d.f0_a && d.f0_b) d.relative = relative_difference(*d.f0_a, *d.f0_b);
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
+}  // namespace gridfree

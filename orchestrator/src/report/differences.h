@@ -1,0 +1,37 @@
+// Relative differences of the extrapolated values between series that
+// differ in exactly one factor (case, convection, fwhm_dp, drag,
+// deposition) — how FM18 compares drag laws, filter widths and particle
+// configurations:
+//
+//     d_ab = 2 |f0_a − f0_b| / |f0_a + f0_b|
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "report/series_summary.h"
+
+namespace gridfree {
+
+struct SeriesDifference {
+  std::string factor;             // case | convection | fwhm_dp | drag | deposition
+  std::string value_a, value_b;   // that factor's level in series a and b
+  std::size_t a = 0, b = 0;       // indices into the summaries (a < b)
+  std::optional<double> f0_a, f0_b;
+  std::optional<double> relative; // d_ab; empty when either f0 is missing
+};
+
+// 2|a − b| / |a + b|; empty when a + b = 0 or either is not finite.
+std::optional<double> relative_difference(double a, double b);
+
+// (factor, level) pairs of a series, in the fixed order case, convection,
+// fwhm_dp, drag, deposition (an empty deposition counts as "diffusion").
+std::vector<std::pair<std::string, std::string>> series_factors(const SeriesData& series);
+
+// Every pair of series differing in exactly one factor, in series order.
+std::vector<SeriesDifference> one_factor_differences(const std::vector<SeriesSummary>& series);
+
+}  // namespace gridfree

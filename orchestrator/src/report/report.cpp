@@ -1,0 +1,63 @@
+// write_study_report: builds the report content and writes every file.
+//
+// Order: CSV tables, SVG charts, then report.md and report.html last, so a
+// reader who sees the new documents also finds the files they link to.
+#include "report/report.h"
+
+#include <algorithm>
+
+#include <spdlog/spdlog.h>
+
+#include "report/atomic_file.h"
+#include "report/report_content.h"
+
+namespace gridfree {
+
+namespace {
+
+// Per-series charts of an earlier run whose series no longer exist (e.g. a
+// study redefined under the same name) would be misleading: remove them.
+void remove_stale_charts(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& written) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> stale;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    const bool per_series = name.rfind("fig1_", 0) == 0 || name.rfind("gci_", 0) == 0;
+    if (!per_series || entry.path().extension() != ".svg") continue;
+    if (std::find(written.begin(), written.end(), entry.path()) == written.end()) stale.push_back(entry.path());
+  }
+  for (const auto& path : stale) std::filesystem::remove(path, ec);
+}
+
+}  // namespace
+
+ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir) {
+  return write_study_report(data, out_dir,
+                            library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}));
+}
+
+ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,
+                               const Extrapolator& extrapolate) {
+  std::filesystem::create_directories(out_dir);
+  const ReportContent content = build_report_content(data, extrapolate);
+  ReportFiles files;
+  for (const NamedTable* t : {&content.grids_table, &content.series_table, &content.differences_table,
+                              &content.gci_table, &content.failures_table}) {
+    files.csv.push_back(out_dir / t->file);
+    write_file_atomically(files.csv.back(), to_csv(t->table));
+  }
+  for (const NamedChart& c : content.charts) {
+    files.svg.push_back(out_dir / c.file);
+    write_file_atomically(files.svg.back(), render_svg_file(c.chart));
+  }
+  remove_stale_charts(out_dir, files.svg);
+  files.markdown = out_dir / "report.md";
+  write_file_atomically(files.markdown, render_markdown(content));
+  files.html = out_dir / "report.html";
+  write_file_atomically(files.html, render_html(content));
+  spdlog::info("report: {} series, {} charts written to {}", content.series.size(), files.svg.size(),
+               out_dir.string());
+  return files;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,44 @@
+// Everything a report shows, computed once and rendered three ways
+// (Markdown, HTML, CSV + SVG files): series summaries with their
+// extrapolations, one-factor differences, tables and charts.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/differences.h"
+#include "report/extrapolator.h"
+#include "report/report_charts.h"
+#include "report/report_data.h"
+#include "report/series_summary.h"
+#include "report/table.h"
+
+namespace gridfree {
+
+struct NamedTable {
+  std::string file;     // CSV file name
+  std::string title;    // section heading
+  Table table;
+};
+
+struct ReportContent {
+  StudyReportData data;                    // as given (series in the given order)
+  std::vector<SeriesSummary> series;
+  std::vector<SeriesDifference> differences;
+  NamedTable series_table, differences_table, gci_table, grids_table, failures_table;
+  std::vector<NamedChart> charts;
+
+  // Counts over all grids of all series.
+  int grids_total() const;
+  int grids_converged() const;
+  int grids_failed() const;
+  int grids_pending() const;
+};
+
+ReportContent build_report_content(const StudyReportData& data, const Extrapolator& extrapolate);
+
+// Report documents; chart files are referenced by their NamedChart::file.
+std::string render_markdown(const ReportContent& content);
+std::string render_html(const ReportContent& content);  // self-contained: CSS and SVG inline
+
+}  // namespace gridfree

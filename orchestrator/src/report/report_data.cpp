@@ -1,0 +1,25 @@
+// SeriesData::label: the short name a series goes by in tables and legends.
+#include "report/report_data.h"
+
+#include "report/text_format.h"
+
+namespace gridfree {
+
+// "PC1 superbee fwhm6 bvk"; a centroid-deposition series shows "centroid"
+// instead of the (unused) filter width, and any other non-default
+// deposition is appended.
+std::string SeriesData::label() const {
+  std::string out = case_name + " " + convection + " ";
+  if (deposition == "centroid") {
+    out += "centroid";
+  } else {
+    out += "fwhm" + format_g(fwhm_dp, 6);
+  }
+  out += " " + drag;
+  if (!deposition.empty() && deposition != "diffusion" && deposition != "centroid") {
+    out += " " + deposition;
+  }
+  return out;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,44 @@
+// Everything a study report shows, read from the store by the orchestrator
+// and handed to the report writer (which never touches SQLite itself).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gridfree {
+
+// One job = one grid of one series.
+struct GridPoint {
+  std::string job_hash;
+  double delta_star = 0;             // h
+  int nx = 0, ny = 0, nz = 0;
+  std::string status;                // result status: converged | not_converged | diverged | invalid | failed | (job) queued | running
+  std::optional<double> dp_star;     // f, when the job produced one
+  std::string reason;                // why not converged / failed
+  double wall_s = 0, cpu_s = 0, peak_rss_mb = 0;
+  int iterations = 0;
+};
+
+// One (case, convection, fwhm_dp, drag[, deposition]) over all grids.
+struct SeriesData {
+  long long id = 0;
+  std::string case_name, convection, drag, deposition;
+  double fwhm_dp = 0;
+  std::string status;                // queued | running | done | failed
+  std::vector<GridPoint> grids;      // every grid of the series, any order
+  std::string label() const;         // "PC1 superbee fwhm6 bvk"
+};
+
+struct StudyReportData {
+  std::string study_name;
+  std::string status;
+  std::string submitted_at, finished_at;
+  std::string version;               // gridfree version that wrote the report
+  std::string baseline_description;  // design (factorial / one_at_a_time baseline)
+  std::string extrapolation_method = "fm";  // fm | eh14
+  double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
+  std::vector<SeriesData> series;
+};
+
+}  // namespace gridfree

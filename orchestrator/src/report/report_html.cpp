@@ -1,0 +1,82 @@
+// report.html: one self-contained page (inline CSS, inline SVG charts, no
+// scripts, no external resources), with the same content as report.md.
+#include <string>
+
+#include "report/report_content.h"
+#include "report/report_summary.h"
+#include "report/text_format.h"
+
+namespace gridfree {
+
+namespace {
+
+constexpr const char* kStyle = R"css(
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em auto; max-width: 1200px; padding: 0 1em; color: #222; }
+h1 { font-size: 1.6em; } h2 { margin-top: 2em; border-bottom: 1px solid #ccc; } h3 { font-size: 1.05em; }
+dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1em; }
+dl.summary dt { font-weight: bold; } dl.summary dd { margin: 0; }
+.attention { background: #fff4e5; border-left: 4px solid #e69f00; padding: 0.5em 1em; }
+.scroll { overflow-x: auto; }
+table.data { border-collapse: collapse; font-size: 0.85em; margin: 0.5em 0; }
+table.data th, table.data td { border: 1px solid #ccc; padding: 0.2em 0.5em; white-space: nowrap; }
+table.data td.prose { white-space: normal; min-width: 18em; max-width: 36em; }
+table.data th { background: #f2f2f2; } table.data td.num { text-align: right; font-variant-numeric: tabular-nums; }
+table.data tr:nth-child(even) td { background: #fafafa; }
+figure { margin: 1em 0; } figcaption { font-size: 0.9em; color: #444; max-width: 720px; }
+p.note { font-size: 0.9em; color: #444; max-width: 900px; }
+@media print { .scroll { overflow: visible; } figure { break-inside: avoid; } }
+)css";
+
+std::string table_section(const NamedTable& t, const std::string& id, const std::string& empty_text) {
+  std::string out = "<h2 id=\"" + id + "\">" + xml_escape(t.title) + "</h2>\n";
+  const std::string note = reading_note(t.file);
+  if (!note.empty()) out += "<p class=\"note\">" + xml_escape(note) + "</p>\n";
+  out += t.table.rows.empty() ? "<p>" + xml_escape(empty_text) + "</p>\n"
+                              : "<div class=\"scroll\">\n" + to_html(t.table) + "</div>\n";
+  out += "<p class=\"note\">CSV: " + xml_escape(t.file) + " (beside this file)</p>\n";
+  return out;
+}
+
+std::string figure(const NamedChart& c) {
+  return "<figure id=\"" + xml_escape(slugify(c.file)) + "\">\n" + render_svg(c.chart) + "<figcaption>" +
+         xml_escape(c.caption) + " File: " + xml_escape(c.file) + "</figcaption>\n</figure>\n";
+}
+
+bool per_series(const NamedChart& c) { return c.file.rfind("fig1_", 0) == 0 || c.file.rfind("gci_", 0) == 0; }
+
+}  // namespace
+
+std::string render_html(const ReportContent& c) {
+  const std::string title = "Grid-convergence report: " + c.data.study_name;
+  std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  out += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+  out += "<title>" + xml_escape(title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
+  out += "<h1>" + xml_escape(title) + "</h1>\n<dl class=\"summary\">\n";
+  for (const auto& [key, value] : summary_items(c)) {
+    out += "<dt>" + xml_escape(key) + "</dt><dd>" + xml_escape(value) + "</dd>\n";
+  }
+  out += "</dl>\n";
+  const auto warnings = series_warnings(c);
+  if (!warnings.empty()) {
+    out += "<div class=\"attention\"><strong>Attention:</strong><ul>\n";
+    for (const auto& w : warnings) out += "<li>" + xml_escape(w) + "</li>\n";
+    out += "</ul></div>\n";
+  }
+  out += table_section(c.series_table, "series", "No series.");
+  out += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
+  out += "<h2 id=\"charts\">Charts</h2>\n";
+  for (const auto& chart : c.charts) {
+    if (!per_series(chart)) out += figure(chart);
+  }
+  out += "<h3>Per series</h3>\n";
+  for (const auto& chart : c.charts) {
+    if (per_series(chart)) out += figure(chart);
+  }
+  out += table_section(c.gci_table, "gci", "No series has three converged grids yet.");
+  out += table_section(c.failures_table, "failures", "None: every finished grid converged.");
+  out += table_section(c.grids_table, "grids", "No grids.");
+  out += "</body>\n</html>\n";
+  return out;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,23 @@
+// The study summary and the reading notes shared by report.md and
+// report.html, as plain text (each renderer escapes it for its format).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "report/report_content.h"
+
+namespace gridfree {
+
+// ("Study", "bursting-bubble"), ("Status", "done"), ... in display order;
+// empty values are left out.
+std::vector<std::pair<std::string, std::string>> summary_items(const ReportContent& content);
+
+// Series that are incomplete or have insufficient grids, one line each.
+std::vector<std::string> series_warnings(const ReportContent& content);
+
+// One short paragraph per section on how to read it (keyed by CSV/section name).
+std::string reading_note(const std::string& section);
+
+}  // namespace gridfree

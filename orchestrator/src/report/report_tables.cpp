@@ -1,0 +1,209 @@
+// Builders of the report tables (see report_tables.h).
+#include "report/report_tables.h"
+
+#include <optional>
+
+#include "report/text_format.h"
+
+namespace gridfree {
+
+namespace {
+
+Column text_col(std::string name, std::string title = {}, bool csv_only = false) {
+  return {std::move(name), std::move(title), csv_only, false};
+}
+Column prose_col(std::string name, std::string title = {}) {
+  return {std::move(name), std::move(title), false, false, true};
+}
+Column num_col(std::string name, std::string title = {}, bool csv_only = false) {
+  return {std::move(name), std::move(title), csv_only, true};
+}
+
+// Factor columns present in the CSV of the grids and series tables.
+void add_factor_columns(std::vector<Column>& columns) {
+  for (const char* f : {"case", "convection", "fwhm_dp", "drag", "deposition"}) {
+    columns.push_back(text_col(f, {}, true));
+  }
+}
+
+void add_factor_cells(std::vector<Cell>& row, const SeriesData& s) {
+  row.push_back(text_cell(s.case_name));
+  row.push_back(text_cell(s.convection));
+  row.push_back(number_cell(s.fwhm_dp));
+  row.push_back(text_cell(s.drag));
+  row.push_back(text_cell(s.deposition.empty() ? "diffusion" : s.deposition));
+}
+
+std::string series_status(const SeriesSummary& s) {
+  std::string status = s.series.status.empty() ? "unknown" : s.series.status;
+  if (s.incomplete && status != "running" && status != "queued") status += " (incomplete)";
+  return status;
+}
+
+}  // namespace
+
+Table grids_table(const std::vector<SeriesSummary>& series) {
+  Table t;
+  t.columns.push_back(text_col("series"));
+  add_factor_columns(t.columns);
+  t.columns.push_back(text_col("job_hash", {}, true));
+  t.columns.push_back(num_col("delta_star", "Δ*"));
+  for (const char* n : {"nx", "ny", "nz"}) t.columns.push_back(num_col(n, {}, true));
+  t.columns.push_back(num_col("cells"));
+  t.columns.push_back(text_col("status"));
+  t.columns.push_back(num_col("dp_star", "DP*"));
+  t.columns.push_back(num_col("fhat", "fit", true));
+  t.columns.push_back(num_col("u", "U"));
+  t.columns.push_back(num_col("rde", "RDE"));
+  t.columns.push_back(num_col("error_vs_f0", "|f−f0|/f0", true));
+  t.columns.push_back(num_col("iterations"));
+  t.columns.push_back(num_col("wall_s", "wall s"));
+  t.columns.push_back(num_col("cpu_s", "CPU s"));
+  t.columns.push_back(num_col("peak_rss_mb", "RSS MB"));
+  t.columns.push_back(prose_col("reason"));
+  for (const auto& s : series) {
+    for (const GridPoint& g : s.series.grids) {
+      const ExtrapolatedGrid* e = nullptr;
+      if (s.extrapolation && is_converged(g)) e = s.extrapolation->grid_at(g.delta_star);
+      std::vector<Cell> row;
+      row.push_back(text_cell(s.label));
+      add_factor_cells(row, s.series);
+      row.push_back(text_cell(g.job_hash));
+      row.push_back(number_cell(g.delta_star, 4));
+      row.push_back(integer_cell(g.nx));
+      row.push_back(integer_cell(g.ny));
+      row.push_back(integer_cell(g.nz));
+      const long long cells = static_cast<long long>(g.nx) * g.ny * g.nz;
+      row.push_back({std::to_string(cells), std::to_string(g.nx) + "×" + std::to_string(g.ny) + "×" +
+                                                std::to_string(g.nz) + " (" + std::to_string(cells) + ")"});
+      row.push_back(text_cell(g.status));
+      row.push_back(number_cell(g.dp_star, 7));
+      row.push_back(number_cell(e ? e->fhat : std::nullopt, 7));
+      row.push_back(number_cell(e ? e->u : std::nullopt, 3));
+      row.push_back(percent_cell(e ? e->rde : std::nullopt));
+      row.push_back(percent_cell(is_converged(g) ? s.relative_error(*g.dp_star) : std::nullopt));
+      row.push_back(integer_cell(g.iterations));
+      row.push_back(number_cell(g.wall_s, 3));
+      row.push_back(number_cell(g.cpu_s, 3));
+      row.push_back(number_cell(g.peak_rss_mb, 4));
+      row.push_back(text_cell(g.reason));
+      t.rows.push_back(std::move(row));
+    }
+  }
+  return t;
+}
+
+Table series_table(const std::vector<SeriesSummary>& series) {
+  Table t;
+  t.columns.push_back(text_col("series"));
+  add_factor_columns(t.columns);
+  t.columns.push_back(text_col("status"));
+  t.columns.push_back(num_col("grids"));
+  t.columns.push_back(num_col("ng", "ng (converged)"));
+  t.columns.push_back(num_col("failed"));
+  t.columns.push_back(num_col("pending", {}, true));
+  t.columns.push_back(text_col("method"));
+  t.columns.push_back(num_col("f0"));
+  t.columns.push_back(num_col("p"));
+  t.columns.push_back(num_col("c"));
+  t.columns.push_back(num_col("c1"));
+  t.columns.push_back(num_col("c2"));
+  t.columns.push_back(num_col("f0_power", {}, true));
+  t.columns.push_back(num_col("p_power", {}, true));
+  t.columns.push_back(text_col("p_found", {}, true));
+  t.columns.push_back(num_col("f0_mixed", {}, true));
+  t.columns.push_back(num_col("sigma_re", "σ_RE"));
+  t.columns.push_back(num_col("data_range", "R_f"));
+  t.columns.push_back(num_col("sigma_re_over_rf", "σ_RE/R_f"));
+  t.columns.push_back(text_col("good_fit", "good fit"));
+  t.columns.push_back(num_col("fs", "Fs"));
+  t.columns.push_back(prose_col("note"));
+  t.columns.push_back(prose_col("extrapolation_notes", "extrapolation notes"));
+  for (const auto& s : series) {
+    std::vector<Cell> row;
+    row.push_back(text_cell(s.label));
+    add_factor_cells(row, s.series);
+    row.push_back(text_cell(series_status(s)));
+    row.push_back(integer_cell(static_cast<long long>(s.series.grids.size())));
+    row.push_back(integer_cell(s.converged()));
+    row.push_back(integer_cell(s.failed));
+    row.push_back(integer_cell(s.pending));
+    const ExtrapolationView empty;
+    const ExtrapolationView& e = s.extrapolation ? *s.extrapolation : empty;
+    row.push_back(text_cell(e.method));
+    row.push_back(number_cell(s.f0(), 8));
+    row.push_back(number_cell(e.p, 3));
+    row.push_back(number_cell(e.power.c, 4));
+    row.push_back(number_cell(e.mixed.c1, 4));
+    row.push_back(number_cell(e.mixed.c2, 4));
+    row.push_back(number_cell(e.power.f0, 8));
+    row.push_back(number_cell(e.power.p, 4));
+    row.push_back(text_cell(s.extrapolation ? (e.power.p_found ? "yes" : "no") : ""));
+    row.push_back(number_cell(e.mixed.f0, 8));
+    row.push_back(number_cell(e.sigma_re, 3));
+    row.push_back(number_cell(e.data_range, 3));
+    const auto quality = e.fit_quality();
+    row.push_back(number_cell(quality, 3));
+    row.push_back(text_cell(quality ? (*quality < 1 ? "yes" : "no") : ""));
+    row.push_back(number_cell(e.fs, 3));
+    row.push_back(text_cell(s.note()));
+    std::string notes;
+    for (const auto& n : e.notes) notes += (notes.empty() ? "" : "; ") + n;
+    row.push_back(text_cell(notes));
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+Table differences_table(const std::vector<SeriesSummary>& series,
+                        const std::vector<SeriesDifference>& differences) {
+  Table t;
+  t.columns = {text_col("factor"),          text_col("value_a", "a"),   text_col("value_b", "b"),
+               text_col("series_a"),        text_col("series_b"),       num_col("f0_a"),
+               num_col("f0_b"),             num_col("relative_difference", "2|f0a−f0b|/(f0a+f0b)")};
+  for (const auto& d : differences) {
+    t.rows.push_back({text_cell(d.factor), text_cell(d.value_a), text_cell(d.value_b),
+                      text_cell(series[d.a].label), text_cell(series[d.b].label),
+                      number_cell(d.f0_a, 8), number_cell(d.f0_b, 8), percent_cell(d.relative)});
+  }
+  return t;
+}
+
+Table gci_table(const std::vector<SeriesSummary>& series) {
+  Table t;
+  t.columns = {text_col("series"),        num_col("h1", "Δ*1"),          num_col("h2", "Δ*2"),
+               num_col("h3", "Δ*3"),      num_col("p"),                  num_col("f_ext", "φ_ext"),
+               num_col("gci_fine", "GCI_fine"), text_col("convergence"), text_col("status"),
+               num_col("f0", "f0 (regression)"), num_col("f_ext_vs_f0", "(φ_ext−f0)/f0")};
+  for (const auto& s : series) {
+    if (!s.extrapolation) continue;
+    const auto f0 = s.f0();
+    for (const GciView& g : s.extrapolation->gci) {
+      std::optional<double> deviation;
+      if (g.f_ext && f0 && *f0 != 0) deviation = (*g.f_ext - *f0) / *f0;
+      t.rows.push_back({text_cell(s.label), number_cell(g.h[0], 4), number_cell(g.h[1], 4),
+                        number_cell(g.h[2], 4), number_cell(g.p, 3), number_cell(g.f_ext, 8),
+                        percent_cell(g.gci_fine), text_cell(g.convergence), text_cell(g.status),
+                        number_cell(f0, 8), percent_cell(deviation)});
+    }
+  }
+  return t;
+}
+
+Table failures_table(const std::vector<SeriesSummary>& series) {
+  Table t;
+  t.columns = {text_col("series"), num_col("delta_star", "Δ*"), num_col("cells"), text_col("status"),
+               num_col("dp_star", "DP*"), prose_col("reason"), text_col("job_hash", {}, true)};
+  for (const auto& s : series) {
+    for (const GridPoint& g : s.series.grids) {
+      if (!is_failed(g)) continue;
+      t.rows.push_back({text_cell(s.label), number_cell(g.delta_star, 4),
+                        integer_cell(static_cast<long long>(g.nx) * g.ny * g.nz), text_cell(g.status),
+                        number_cell(g.dp_star, 7), text_cell(g.reason.empty() ? "(no reason recorded)" : g.reason),
+                        text_cell(g.job_hash)});
+    }
+  }
+  return t;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,26 @@
+// The report's tables, built from the series summaries:
+//   grids        one row per job (series, Δ*, cells, status, dp_star, U, RDE,
+//                iterations, wall, cpu, RSS, reason)
+//   series       one row per series: extrapolation (method, f0, p, c, c1, c2,
+//                σ_RE, R_f, σ_RE/R_f and the good-fit flag σ_RE/R_f < 1, Fs, ng)
+//   differences  one-factor pairs, 2|f0a − f0b|/|f0a + f0b|
+//   gci          classic three-grid GCI of every consecutive triplet, beside f0
+//   failures     grids that finished without a value, with the reason
+#pragma once
+
+#include <vector>
+
+#include "report/differences.h"
+#include "report/series_summary.h"
+#include "report/table.h"
+
+namespace gridfree {
+
+Table grids_table(const std::vector<SeriesSummary>& series);
+Table series_table(const std::vector<SeriesSummary>& series);
+Table differences_table(const std::vector<SeriesSummary>& series,
+                        const std::vector<SeriesDifference>& differences);
+Table gci_table(const std::vector<SeriesSummary>& series);
+Table failures_table(const std::vector<SeriesSummary>& series);
+
+}  // namespace gridfree

@@ -1,0 +1,251 @@
+// SVG rendering of a Chart (see svg_chart.h for the conventions).
+//
+// Layout (pixels): title band on top, y tick labels on the left, x tick
+// labels and axis label below, an optional note line at the bottom and an
+// optional legend column on the right whose width follows the longest label.
+#include "report/svg_chart.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "report/svg_marker.h"
+#include "report/text_format.h"
+
+namespace gridfree {
+
+namespace {
+
+constexpr std::array<const char*, 8> kPalette = {
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#7F7F7F"};
+constexpr std::array<Marker, 6> kMarkers = {Marker::circle, Marker::square,  Marker::triangle,
+                                            Marker::diamond, Marker::x_mark, Marker::cross};
+constexpr double kFont = 12.0;
+
+bool usable(double v, AxisScale scale) {
+  return std::isfinite(v) && (scale == AxisScale::linear || v > 0);
+}
+
+// Data extent along one axis; `values` already filtered to usable ones.
+AxisTicks axis_ticks(const ChartAxis& axis, std::vector<double> values, int target) {
+  if (axis.min) values.push_back(*axis.min);
+  if (axis.max) values.push_back(*axis.max);
+  double lo = axis.scale == AxisScale::log ? 1.0 : 0.0;
+  double hi = axis.scale == AxisScale::log ? 10.0 : 1.0;
+  if (!values.empty()) {
+    lo = *std::min_element(values.begin(), values.end());
+    hi = *std::max_element(values.begin(), values.end());
+  }
+  AxisTicks ticks = axis.scale == AxisScale::log ? log_ticks(lo, hi) : linear_ticks(lo, hi, target);
+  if (axis.min) ticks.lo = *axis.min;
+  if (axis.max) ticks.hi = *axis.max;
+  if (axis.min || axis.max) {
+    const double slack = 1e-9 * std::abs(ticks.hi - ticks.lo);
+    auto outside = [&](double v) { return v < ticks.lo - slack || v > ticks.hi + slack; };
+    std::erase_if(ticks.major, outside);
+    std::erase_if(ticks.minor, outside);
+  }
+  return ticks;
+}
+
+std::string text(double x, double y, const std::string& content, const std::string& extra = {}) {
+  return "<text x=\"" + px(x) + "\" y=\"" + px(y) + "\"" + extra + ">" + xml_escape(content) +
+         "</text>";
+}
+
+std::string truncated(const std::string& label, std::size_t max_chars) {
+  if (label.size() <= max_chars) return label;
+  return label.substr(0, max_chars - 3) + "...";
+}
+
+struct LegendEntry {
+  std::string label, colour;
+  Marker marker;
+  bool line, dashed, hollow;
+};
+
+}  // namespace
+
+const char* palette_colour(int index) {
+  const int n = static_cast<int>(kPalette.size());
+  return kPalette[static_cast<std::size_t>(((index % n) + n) % n)];
+}
+
+Marker marker_for(int index) {
+  const int n = static_cast<int>(kMarkers.size());
+  return kMarkers[static_cast<std::size_t>(((index % n) + n) % n)];
+}
+
+std::string render_svg(const Chart& chart) {
+  const std::string id = slugify(chart.id.empty() ? chart.title : chart.id);
+  // 1. Axis ranges from the data.
+  std::vector<double> xs, ys;
+  for (const auto& s : chart.series) {
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (usable(s.x[i], chart.x.scale)) xs.push_back(s.x[i]);
+      const double y = i < s.y.size() ? s.y[i] : NAN;
+      if (!usable(y, chart.y.scale)) continue;
+      ys.push_back(y);
+      const double e = i < s.y_error.size() ? s.y_error[i] : NAN;
+      if (std::isfinite(e) && e > 0) {
+        ys.push_back(y + e);
+        if (usable(y - e, chart.y.scale)) ys.push_back(y - e);
+      }
+    }
+  }
+  for (const auto& h : chart.hlines) {
+    if (usable(h.y, chart.y.scale)) ys.push_back(h.y);
+  }
+  const AxisTicks xt = axis_ticks(chart.x, xs, 7);
+  const AxisTicks yt = axis_ticks(chart.y, ys, 6);
+
+  // 2. Layout.
+  std::vector<LegendEntry> legend;
+  for (std::size_t i = 0; i < chart.series.size(); ++i) {
+    const auto& s = chart.series[i];
+    if (s.name.empty()) continue;
+    legend.push_back({truncated(s.name, 34), palette_colour(s.colour >= 0 ? s.colour : int(i)),
+                      s.marker, s.line, s.dashed, s.hollow});
+  }
+  for (const auto& h : chart.hlines) {
+    if (!h.label.empty()) {
+      legend.push_back({truncated(h.label, 34), palette_colour(h.colour), Marker::none, true, h.dashed, false});
+    }
+  }
+  std::size_t longest = 0;
+  for (const auto& e : legend) longest = std::max(longest, e.label.size());
+  const double legend_w = legend.empty() ? 0.0 : std::clamp(40.0 + 7.2 * double(longest), 110.0, 280.0);
+  const double left = 78, right = chart.width - 16 - legend_w;
+  const double top = chart.subtitle.empty() ? 44 : 60;
+  const double bottom = chart.height - 66.0;  // room for the x label and a note line
+  const AxisMap mx{chart.x.scale, xt.lo, xt.hi, left, right};
+  const AxisMap my{chart.y.scale, yt.lo, yt.hi, bottom, top};
+
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << chart.width << "\" height=\""
+      << chart.height << "\" viewBox=\"0 0 " << chart.width << " " << chart.height
+      << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << kFont
+      << "\" role=\"img\" aria-label=\"" << xml_escape(chart.title) << "\">\n";
+  svg << "<title>" << xml_escape(chart.title) << "</title>\n";
+  svg << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+  svg << "<defs><clipPath id=\"" << id << "-plot\"><rect x=\"" << px(left) << "\" y=\"" << px(top)
+      << "\" width=\"" << px(right - left) << "\" height=\"" << px(bottom - top)
+      << "\"/></clipPath></defs>\n";
+  svg << text(chart.width / 2.0, 22, chart.title, " text-anchor=\"middle\" font-size=\"15\" font-weight=\"bold\"") << "\n";
+  if (!chart.subtitle.empty()) {
+    svg << text(chart.width / 2.0, 40, chart.subtitle, " text-anchor=\"middle\" fill=\"#444444\"") << "\n";
+  }
+
+  // 3. Grid, ticks, labels.
+  svg << "<g stroke=\"#e3e3e3\" stroke-width=\"1\">";
+  for (double v : xt.major) svg << "<path d=\"M" << px(mx(v)) << " " << px(top) << "V" << px(bottom) << "\"/>";
+  for (double v : yt.major) svg << "<path d=\"M" << px(left) << " " << px(my(v)) << "H" << px(right) << "\"/>";
+  svg << "</g>\n<g stroke=\"#333333\" stroke-width=\"1\">";
+  for (double v : xt.major) svg << "<path d=\"M" << px(mx(v)) << " " << px(bottom) << "v5\"/>";
+  for (double v : xt.minor) svg << "<path d=\"M" << px(mx(v)) << " " << px(bottom) << "v3\"/>";
+  for (double v : yt.major) svg << "<path d=\"M" << px(left) << " " << px(my(v)) << "h-5\"/>";
+  for (double v : yt.minor) svg << "<path d=\"M" << px(left) << " " << px(my(v)) << "h-3\"/>";
+  svg << "</g>\n<g fill=\"#222222\">";
+  for (double v : xt.major) svg << text(mx(v), bottom + 18, format_tick(v, xt, chart.x.scale), " text-anchor=\"middle\"");
+  for (double v : yt.major) svg << text(left - 8, my(v) + 4, format_tick(v, yt, chart.y.scale), " text-anchor=\"end\"");
+  svg << "</g>\n";
+  svg << text((left + right) / 2, bottom + 38, chart.x.label, " text-anchor=\"middle\"") << "\n";
+  const double ymid = (top + bottom) / 2;
+  svg << text(18, ymid, chart.y.label, " text-anchor=\"middle\" transform=\"rotate(-90 18 " + px(ymid) + ")\"") << "\n";
+  svg << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(right - left)
+      << "\" height=\"" << px(bottom - top) << "\" fill=\"none\" stroke=\"#333333\"/>\n";
+
+  // 4. Reference lines, then series (lines and error bars clipped to the plot).
+  svg << "<g clip-path=\"url(#" << id << "-plot)\">\n";
+  for (const auto& h : chart.hlines) {
+    if (!usable(h.y, chart.y.scale)) continue;
+    svg << "<path d=\"M" << px(left) << " " << px(my(h.y)) << "H" << px(right) << "\" stroke=\""
+        << palette_colour(h.colour) << "\" stroke-width=\"1.5\"" << (h.dashed ? " stroke-dasharray=\"7 4\"" : "")
+        << " fill=\"none\"/>\n";
+  }
+  int offscale = 0;
+  std::ostringstream points;
+  for (std::size_t si = 0; si < chart.series.size(); ++si) {
+    const auto& s = chart.series[si];
+    const std::string colour = palette_colour(s.colour >= 0 ? s.colour : int(si));
+    const std::size_t n = std::min(s.x.size(), s.y.size());
+    if (s.line) {
+      std::string path;
+      bool pen_down = false;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!usable(s.x[i], chart.x.scale) || !usable(s.y[i], chart.y.scale)) {
+          pen_down = false;
+          continue;
+        }
+        path += pen_down ? 'L' : 'M';
+        path += px(mx(s.x[i]));
+        path += ' ';
+        path += px(my(s.y[i]));
+        pen_down = true;
+      }
+      if (!path.empty()) {
+        svg << "<path d=\"" << path << "\" stroke=\"" << colour << "\" stroke-width=\"1.8\" fill=\"none\""
+            << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
+      }
+    }
+    for (std::size_t i = 0; i < n && i < s.y_error.size(); ++i) {
+      const double e = s.y_error[i];
+      if (!(std::isfinite(e) && e > 0) || !usable(s.x[i], chart.x.scale) || !usable(s.y[i], chart.y.scale)) continue;
+      const double lo = usable(s.y[i] - e, chart.y.scale) ? my(s.y[i] - e) : bottom + 10;
+      svg << svg_error_bar(mx(s.x[i]), lo, my(s.y[i] + e), colour) << "\n";
+    }
+    // Markers are drawn unclipped, after all lines, so nothing hides them.
+    for (std::size_t i = 0; i < n && s.marker != Marker::none; ++i) {
+      const double x = s.x[i], y = s.y[i];
+      const bool no_value = std::isnan(y);
+      if (mx.contains(x) && (no_value || my.contains(y))) {
+        points << svg_marker(s.marker, mx(x), no_value ? bottom : my(y), colour, s.hollow) << "\n";
+        continue;
+      }
+      ++offscale;
+      const double cx = std::clamp(usable(x, chart.x.scale) ? mx(x) : left, left, right);
+      const double cy = no_value ? bottom : std::clamp(usable(y, chart.y.scale) ? my(y) : bottom, top, bottom);
+      const int dx = usable(x, chart.x.scale) && mx.contains(x) ? 0 : (usable(x, chart.x.scale) && x > xt.hi ? 1 : -1);
+      const int dy = dx != 0 ? 0 : (usable(y, chart.y.scale) && y > yt.hi ? -1 : 1);
+      points << svg_offscale_arrow(cx, cy, dx, dy, colour) << "\n";
+    }
+  }
+  svg << "</g>\n" << points.str();
+
+  // 5. Legend and note.
+  if (!legend.empty()) {
+    const double lx = right + 14;
+    const std::size_t max_rows = static_cast<std::size_t>((bottom - top) / 18.0);
+    const std::size_t rows = legend.size() > max_rows ? max_rows - 1 : legend.size();
+    svg << "<g>";
+    for (std::size_t i = 0; i < rows; ++i) {
+      const auto& e = legend[i];
+      const double ly = top + 10 + 18.0 * double(i);
+      if (e.line) {
+        svg << "<path d=\"M" << px(lx) << " " << px(ly) << "h22\" stroke=\"" << e.colour
+            << "\" stroke-width=\"1.8\"" << (e.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>";
+      }
+      svg << svg_marker(e.marker, lx + 11, ly, e.colour, e.hollow);
+      svg << text(lx + 28, ly + 4, e.label);
+    }
+    if (rows < legend.size()) {
+      svg << text(lx, top + 10 + 18.0 * double(rows) + 4, "... and " + std::to_string(legend.size() - rows) + " more");
+    }
+    svg << "</g>\n";
+  }
+  std::string note = chart.note;
+  if (offscale > 0) {
+    note += std::string(note.empty() ? "" : " ") + std::to_string(offscale) +
+            (offscale == 1 ? " point" : " points") + " off scale (arrows on the edge).";
+  }
+  if (!note.empty()) svg << text(left, chart.height - 10, note, " fill=\"#444444\" font-size=\"11\"") << "\n";
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+std::string render_svg_file(const Chart& chart) {
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + render_svg(chart);
+}
+
+}  // namespace gridfree

@@ -1,0 +1,73 @@
+// A small, dependency-free SVG chart writer: line/scatter series with
+// markers, linear or log axes with nice ticks, axis labels, legend, title,
+// symmetric error bars, dashed horizontal reference lines.
+//
+// Output is a standalone <svg> element of fixed size (default 720×450) with
+// no scripts, no external fonts or images, and deterministic bytes (same
+// chart, same text), so it can be inlined in HTML, linked from Markdown, and
+// compared in tests. All text is XML-escaped.
+//
+// Conventions:
+//  - a point whose y is NaN has no value (e.g. a failed grid): it is drawn
+//    with its marker on the bottom edge of the plot, never dropped;
+//  - a point outside a fixed axis range is drawn as a small arrow on the
+//    edge it left through, and counted in the note line;
+//  - lines break at NaN values (and at non-positive values on log axes).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "report/chart_axis.h"
+
+namespace gridfree {
+
+enum class Marker { none, circle, square, triangle, diamond, cross, x_mark };
+
+struct ChartSeries {
+  std::string name;               // legend text; empty = not in the legend
+  std::vector<double> x, y;
+  std::vector<double> y_error;    // empty, or one half-width per point (≤0/NaN: none)
+  Marker marker = Marker::circle;
+  bool line = true;               // connect consecutive points
+  bool dashed = false;
+  bool hollow = false;            // marker outline only
+  int colour = -1;                // palette index; -1 = the series' position
+};
+
+struct ChartHLine {
+  double y = 0;
+  std::string label;              // legend text
+  int colour = 6;                 // palette index (6 = black)
+  bool dashed = true;
+};
+
+struct ChartAxis {
+  std::string label;
+  AxisScale scale = AxisScale::linear;
+  std::optional<double> min, max;   // fixed limits; otherwise from the data
+};
+
+struct Chart {
+  std::string id;                 // unique within a page (prefixes element ids)
+  std::string title, subtitle;
+  ChartAxis x, y;
+  std::vector<ChartSeries> series;
+  std::vector<ChartHLine> hlines;
+  std::string note;               // one line of text under the plot
+  int width = 720, height = 450;
+};
+
+// Print-friendly, colour-blind-safe palette (Okabe & Ito), as "#rrggbb".
+const char* palette_colour(int index);
+// Marker shapes cycle with the series index (a second cue besides colour).
+Marker marker_for(int index);
+
+// The chart as an <svg> element (no XML declaration; add one for a file).
+std::string render_svg(const Chart& chart);
+
+// render_svg with an XML declaration, for a standalone .svg file.
+std::string render_svg_file(const Chart& chart);
+
+}  // namespace gridfree

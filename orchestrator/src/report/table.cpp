@@ -1,0 +1,86 @@
+// CSV, Markdown and HTML renderings of a Table (see table.h).
+#include "report/table.h"
+
+#include "report/text_format.h"
+
+namespace gridfree {
+
+Cell text_cell(std::string value) { return {value, value}; }
+
+Cell number_cell(const std::optional<double>& value, int shown_digits) {
+  return {format_exact(value), format_g(value, shown_digits)};
+}
+
+Cell percent_cell(const std::optional<double>& fraction, int shown_digits) {
+  return {format_exact(fraction), format_percent(fraction, shown_digits)};
+}
+
+Cell integer_cell(long long value) { return text_cell(std::to_string(value)); }
+
+namespace {
+
+std::string title_of(const Column& c) { return c.title.empty() ? c.name : c.title; }
+
+}  // namespace
+
+std::string to_csv(const Table& table) {
+  std::string out;
+  for (std::size_t i = 0; i < table.columns.size(); ++i) {
+    if (i) out += ',';
+    out += csv_field(table.columns[i].name);
+  }
+  out += "\n";
+  for (const auto& row : table.rows) {
+    for (std::size_t i = 0; i < table.columns.size(); ++i) {
+      if (i) out += ',';
+      out += csv_field(i < row.size() ? row[i].exact : std::string());
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string to_markdown(const Table& table) {
+  std::string head = "|", rule = "|";
+  for (const auto& c : table.columns) {
+    if (c.csv_only) continue;
+    head += ' ';
+    head += md_cell(title_of(c));
+    head += " |";
+    rule += c.numeric ? " ---: |" : " --- |";
+  }
+  std::string out = head + "\n" + rule + "\n";
+  for (const auto& row : table.rows) {
+    out += "|";
+    for (std::size_t i = 0; i < table.columns.size(); ++i) {
+      if (table.columns[i].csv_only) continue;
+      out += ' ';
+      out += md_cell(i < row.size() ? row[i].shown : std::string());
+      out += " |";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string to_html(const Table& table, const std::string& css_class) {
+  std::string out = "<table class=\"" + xml_escape(css_class) + "\">\n<thead><tr>";
+  for (const auto& c : table.columns) {
+    if (!c.csv_only) out += "<th>" + xml_escape(title_of(c)) + "</th>";
+  }
+  out += "</tr></thead>\n<tbody>\n";
+  for (const auto& row : table.rows) {
+    out += "<tr>";
+    for (std::size_t i = 0; i < table.columns.size(); ++i) {
+      const Column& c = table.columns[i];
+      if (c.csv_only) continue;
+      out += c.numeric ? "<td class=\"num\">" : c.prose ? "<td class=\"prose\">" : "<td>";
+      out += xml_escape(i < row.size() ? row[i].shown : std::string()) + "</td>";
+    }
+    out += "</tr>\n";
+  }
+  out += "</tbody>\n</table>\n";
+  return out;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,40 @@
+// A report table and its three renderings: CSV (full precision, every
+// column), Markdown and HTML (rounded values, display columns only).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gridfree {
+
+struct Cell {
+  std::string exact;   // CSV text
+  std::string shown;   // Markdown/HTML text
+};
+
+struct Column {
+  std::string name;          // CSV header
+  std::string title;         // displayed header (defaults to name)
+  bool csv_only = false;     // left out of the Markdown/HTML table
+  bool numeric = false;      // right-aligned in HTML
+  bool prose = false;        // free text (notes, reasons): wraps in HTML
+};
+
+struct Table {
+  std::vector<Column> columns;
+  std::vector<std::vector<Cell>> rows;   // one Cell per column
+};
+
+// Cells from text and numbers; a missing number is an empty cell.
+Cell text_cell(std::string value);
+Cell number_cell(const std::optional<double>& value, int shown_digits = 6);
+Cell percent_cell(const std::optional<double>& fraction, int shown_digits = 3);
+Cell integer_cell(long long value);
+
+std::string to_csv(const Table& table);
+std::string to_markdown(const Table& table);
+// <table class="..."> with <thead>/<tbody>; cells' classes carry alignment.
+std::string to_html(const Table& table, const std::string& css_class = "data");
+
+}  // namespace gridfree

@@ -1,0 +1,37 @@
+// Text helpers shared by the report writers: escaping for XML/HTML, CSV
+// fields (RFC 4180 quoting), Markdown table cells, and number formatting
+// that is locale-independent and deterministic (same input, same bytes).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace gridfree {
+
+// Escapes & < > " ' so the text is safe inside XML/HTML content and attributes.
+std::string xml_escape(std::string_view text);
+
+// A CSV field: quoted (with "" doubling) when it holds , " CR or LF.
+std::string csv_field(std::string_view text);
+
+// A Markdown table cell: | escaped, newlines turned into spaces.
+std::string md_cell(std::string_view text);
+
+// printf "%.{digits}g" in the C locale; "nan"/"inf" spelled out.
+std::string format_g(double value, int digits = 6);
+
+// Full precision for machine-readable tables (round-trips a double).
+std::string format_exact(double value);
+
+// format_g / format_exact of an optional; empty string when absent.
+std::string format_g(const std::optional<double>& value, int digits = 6);
+std::string format_exact(const std::optional<double>& value);
+
+// value·100 with `digits` significant digits and a % sign; "" when absent.
+std::string format_percent(const std::optional<double>& fraction, int digits = 3);
+
+// A file-name-safe slug: letters, digits, '-' and '_' kept, the rest '_'.
+std::string slugify(std::string_view text);
+
+}  // namespace gridfree

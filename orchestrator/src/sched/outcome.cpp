@@ -1,0 +1,126 @@
+// Failure classification of finished jobs (see outcome.h).
+#include "sched/outcome.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace gridfree {
+namespace {
+
+bool known_status(const std::string& s) {
+  return s == "converged" || s == "not_converged" || s == "diverged" || s == "invalid" || s == "failed";
+}
+
+double number_at(const nlohmann::json& j, const char* a, const char* b = nullptr) {
+  const nlohmann::json* p = &j;
+  for (const char* k : {a, b}) {
+    if (k == nullptr) break;
+    if (!p->is_object() || !p->contains(k)) return 0;
+    p = &(*p)[k];
+  }
+  return p->is_number() ? p->get<double>() : 0;
+}
+
+}  // namespace
+
+ResultRow read_result_file(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("no result file");
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::exception&) {
+    throw std::runtime_error("result file is not valid JSON");
+  }
+  if (!j.is_object() || !j.contains("status") || !j["status"].is_string())
+    throw std::runtime_error("result file has no status");
+  ResultRow r;
+  r.status = j["status"].get<std::string>();
+  if (!known_status(r.status)) throw std::runtime_error("result file has unknown status '" + r.status + "'");
+  if (j.contains("reason") && j["reason"].is_string()) r.reason = j["reason"].get<std::string>();
+  if (j.contains("srq") && j["srq"].is_object() && j["srq"].contains("dp_star") && j["srq"]["dp_star"].is_number()) {
+    const double v = j["srq"]["dp_star"].get<double>();
+    if (std::isfinite(v)) r.dp_star = v;
+  }
+  if (r.status == "converged" && !r.dp_star)
+    throw std::runtime_error("converged result without a finite srq.dp_star");
+  if (j.contains("grid") && j["grid"].is_object()) {
+    const auto& g = j["grid"];
+    if (g.contains("cells") && g["cells"].is_array() && g["cells"].size() == 3)
+      for (int a = 0; a < 3; ++a) r.cells[a] = g["cells"][a].is_number_integer() ? g["cells"][a].get<int>() : 0;
+    r.delta_star = number_at(g, "delta_star");
+  }
+  r.iterations = static_cast<int>(number_at(j, "iterations"));
+  r.wall_s = number_at(j, "timing", "wall_s");
+  r.cpu_s = number_at(j, "timing", "cpu_s");
+  r.peak_rss_mb = number_at(j, "memory", "peak_rss_mb");
+  r.result_json = j.dump();
+  return r;
+}
+
+JobOutcome classify_exit(const JobExit& e) {
+  JobOutcome out;
+  const auto result_file = e.run_dir / "result.json";
+  const auto log_tail = [&] {
+    const std::string t = tail_of_file(e.run_dir / "worker.log", 3);
+    return t.empty() ? std::string() : " [log: " + t + "]";
+  };
+  if (e.how == JobExit::How::kKilled) {
+    out.kind = OutcomeKind::kReleased;
+    out.row.reason = describe(e);
+    return out;
+  }
+  if (e.how != JobExit::How::kExited) {
+    out.kind = OutcomeKind::kRetryable;
+    out.row.reason = describe(e) + log_tail();
+    out.row.wall_s = e.wall_s;
+    return out;
+  }
+  if (e.code == 0 || e.code == 3) {
+    try {
+      out.row = read_result_file(result_file);
+    } catch (const std::exception& ex) {
+      if (e.code == 3) {  // ran and said so, but left no readable result: final
+        out.kind = OutcomeKind::kFinal;
+        out.row.status = "failed";
+        out.row.reason = std::string("exit 3 and ") + ex.what() + log_tail();
+        return out;
+      }
+      out.kind = OutcomeKind::kRetryable;
+      out.row.reason = std::string("exit 0 but ") + ex.what() + log_tail();
+      return out;
+    }
+    if (e.code == 0 && out.row.status != "converged") {
+      out.kind = OutcomeKind::kRetryable;
+      out.row.reason = "exit 0 with result status '" + out.row.status + "'";
+      return out;
+    }
+    if (e.code == 3 && out.row.status == "converged") {
+      out.row.status = "failed";
+      out.row.reason = "exit 3 with a converged result";
+    }
+    if (out.row.status != "converged" && out.row.reason.empty()) out.row.reason = "worker exit " + std::to_string(e.code);
+    if (out.row.wall_s == 0) out.row.wall_s = e.wall_s;
+    out.kind = OutcomeKind::kFinal;
+    return out;
+  }
+  if (e.code == 2) {
+    out.kind = OutcomeKind::kFinal;
+    try {
+      out.row = read_result_file(result_file);
+    } catch (const std::exception&) {
+    }
+    out.row.status = "invalid";
+    if (out.row.reason.empty()) out.row.reason = "worker rejected the job (exit 2)" + log_tail();
+    return out;
+  }
+  out.kind = OutcomeKind::kRetryable;
+  out.row.reason = "worker " + describe(e) + log_tail();
+  out.row.wall_s = e.wall_s;
+  return out;
+}
+
+}  // namespace gridfree

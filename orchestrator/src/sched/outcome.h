@@ -1,0 +1,32 @@
+// What a finished job means for the store (failure classification):
+//
+//   exit 0 + valid converged result      → final: converged
+//   exit 3 + result file                 → final: its status (not_converged | diverged | failed) + reason
+//   exit 2                               → final: invalid (not retried: the input is wrong)
+//   exit 1, other codes, a signal, a timeout,
+//   a missing or garbage result file     → retryable (one more attempt, then failed)
+//   killed by our own shutdown           → released (queued again, attempt not spent)
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "exec/executor.h"
+#include "store/store.h"
+
+namespace gridfree {
+
+enum class OutcomeKind { kFinal, kRetryable, kReleased };
+
+struct JobOutcome {
+  OutcomeKind kind = OutcomeKind::kRetryable;
+  ResultRow row;
+};
+
+// Reads <run_dir>/result.json (CONTRACT.md §2). Throws std::runtime_error
+// with the reason when it is missing or not a valid result document.
+ResultRow read_result_file(const std::filesystem::path& file);
+
+JobOutcome classify_exit(const JobExit& exit);
+
+}  // namespace gridfree

@@ -1,0 +1,196 @@
+// The scheduler loop (see scheduler.h).
+#include "sched/scheduler.h"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "exec/local_executor.h"
+#include "sched/outcome.h"
+#include "sched/series_finish.h"
+#include "store/owner.h"
+
+namespace gridfree {
+namespace {
+
+struct InFlight {
+  ClaimedJob job;
+  std::string label;
+};
+
+std::string job_label(Store& store, const ClaimedJob& job) {
+  auto st = store.db().prepare(
+      "SELECT se.case_name, se.convection, se.fwhm_dp, se.drag, se.deposition FROM study_jobs sj "
+      "JOIN series se ON se.id = sj.series_id WHERE sj.job_id = ? AND sj.study_id = ? LIMIT 1");
+  st.bind_all(job.job_id, job.study_id);
+  std::string label = job.job_hash.substr(0, 12);
+  if (st.step()) {
+    SeriesKey k{st.as_text(0), st.as_text(1), st.as_double(2), st.as_text(3), st.as_text(4)};
+    label = k.label();
+  }
+  char cells[64];
+  std::snprintf(cells, sizeof cells, " %dx%dx%d", job.cells[0], job.cells[1], job.cells[2]);
+  return label + cells;
+}
+
+std::vector<long long> studies_of_job(Store& store, long long job_id) {
+  std::vector<long long> out;
+  auto st = store.db().prepare(
+      "SELECT DISTINCT sj.study_id FROM study_jobs sj JOIN studies s ON s.id = sj.study_id "
+      "WHERE sj.job_id = ? AND s.status IN ('queued','running')");
+  st.bind_all(job_id);
+  while (st.step()) out.push_back(st.as_int(0));
+  return out;
+}
+
+ProgressCounts counts(Store& store, const SchedulerOptions& o) {
+  ProgressCounts c;
+  c.workers = o.workers;
+  for (const auto& s : store.statuses(o.study)) {
+    if (!o.study && s.status != "running" && s.status != "queued") continue;
+    c.total += s.jobs - s.cancelled;
+    c.done += s.done;
+    c.failed += s.failed;
+    c.running += s.running;
+    if (s.mean_wall_s > 0) c.mean_wall_s = s.mean_wall_s;
+  }
+  return c;
+}
+
+}  // namespace
+
+int recover_stale_jobs(Store& store) {
+  std::vector<std::string> orphans;
+  {
+    auto st = store.db().prepare("SELECT COALESCE(owner,''), COALESCE(external_id,'') FROM jobs WHERE status = 'running'");
+    while (st.step())
+      if (!owner_alive(st.as_text(0)) && st.as_text(1).rfind("local:", 0) == 0) orphans.push_back(st.as_text(1).substr(6));
+  }
+  for (const auto& id : orphans)
+    if (kill_process_group_if_alive(id)) spdlog::warn("killed an orphaned worker ({})", id);
+  const int n = store.requeue_stale([](const std::string& owner) { return owner_alive(owner); });
+  if (n > 0) spdlog::warn("requeued {} job(s) left running by a process that is gone", n);
+  return n;
+}
+
+void refresh_report(Store& store, long long study_id, const SchedulerOptions& o) {
+  if (!o.report_dir) return;
+  const auto st = store.statuses(study_id);
+  if (st.empty()) return;
+  const auto dir = o.report_dir(st.front().name);
+  if (dir.empty()) return;
+  try {
+    write_report(store, study_id, dir);
+  } catch (const std::exception& e) {
+    spdlog::error("report for study '{}' not written: {}", st.front().name, e.what());
+  }
+}
+
+SchedulerSummary run_scheduler(Store& store, Executor& executor, const SchedulerOptions& o) {
+  SchedulerSummary sum;
+  std::map<long long, InFlight> running;
+
+  // Studies whose jobs were all done already (reused) finish right away.
+  auto sweep = [&](const std::vector<long long>& studies) {
+    for (long long id : studies) {
+      const int n = finish_ready_series(store, id);
+      sum.series_finished += n;
+      if (n > 0) refresh_report(store, id, o);
+    }
+  };
+  sweep(o.study ? std::vector<long long>{*o.study} : store.active_studies());
+
+  for (;;) {
+    if (o.stop_requested()) break;
+    // 1. start while there is capacity
+    while (static_cast<int>(running.size()) < o.workers && !o.stop_requested()) {
+      auto job = store.claim_next(o.study, o.owner);
+      if (!job) break;
+      InFlight f{*job, job_label(store, *job)};
+      JobLaunch launch;
+      launch.job_id = job->job_id;
+      launch.job_hash = job->job_hash;
+      launch.threads = o.threads_per_job;
+      launch.timeout_s = o.timeout_s;
+      try {
+        launch.run_dir = prepare_run_dir(o.runs_root, job->job_hash, job->spec.dump(2));
+      } catch (const std::exception& e) {
+        store.release(job->job_id, o.owner, std::string("run directory: ") + e.what());
+        throw;
+      }
+      store.set_job_paths(job->job_id, (launch.run_dir / "result.json").string());
+      executor.start(launch);
+      if (auto ext = executor.external_id(job->job_id); !ext.empty())
+        store.set_job_external_id(job->job_id, ext);
+      running.emplace(job->job_id, std::move(f));
+      if (o.progress) o.progress->update(counts(store, o));
+    }
+    // Nothing running and nothing to claim: done (run) or idle (daemon).
+    if (running.empty()) {
+      if (o.study) sweep({*o.study});
+      else sweep(store.active_studies());
+      bool others_working = false;
+      if (o.study) {
+        const auto st = store.statuses(o.study);
+        others_working = !st.empty() && (st.front().running > 0 || st.front().queued > 0);
+      }
+      if (o.stop_when_idle && !others_working) break;
+      const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.idle_poll_s);
+      while (std::chrono::steady_clock::now() < until && !o.stop_requested())
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      continue;
+    }
+    // 2. wait for one to finish
+    auto exit = executor.wait_any(0.25);
+    if (!exit) continue;
+    auto it = running.find(exit->job_id);
+    if (it == running.end()) continue;
+    const InFlight f = it->second;
+    running.erase(it);
+    // 3. record it
+    JobOutcome out = classify_exit(*exit);
+    std::string what = f.label + ": ";
+    if (out.kind == OutcomeKind::kFinal) {
+      store.record_result(f.job.job_id, o.owner, out.row);
+      ++sum.finished;
+      if (out.row.status == "converged") {
+        ++sum.converged;
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "converged dp* = %.6g (%.1f s)", *out.row.dp_star, out.row.wall_s);
+        what += buf;
+      } else {
+        ++sum.failed;
+        what += out.row.status + ": " + out.row.reason;
+      }
+    } else if (out.kind == OutcomeKind::kRetryable) {
+      const bool requeued = store.record_retryable_failure(f.job.job_id, o.owner, out.row, o.max_attempts);
+      if (requeued) {
+        ++sum.retried;
+        what += "will retry: " + out.row.reason;
+      } else {
+        ++sum.finished;
+        ++sum.failed;
+        what += "failed: " + out.row.reason;
+      }
+    } else {
+      store.release(f.job.job_id, o.owner, out.row.reason);
+      what += "released: " + out.row.reason;
+    }
+    if (o.progress) o.progress->job_finished(what, counts(store, o));
+    sweep(o.study ? std::vector<long long>{*o.study} : studies_of_job(store, f.job.job_id));
+  }
+
+  if (o.stop_requested()) {
+    sum.interrupted = true;
+    for (long long id : executor.kill_all()) store.release(id, o.owner, "interrupted: requeued for the next run");
+    running.clear();
+  }
+  if (o.progress) o.progress->finish();
+  return sum;
+}
+
+}  // namespace gridfree

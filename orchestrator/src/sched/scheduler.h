@@ -1,0 +1,61 @@
+// The scheduler loop (ninja's, in spirit):
+//
+//   1. while there is capacity: claim the next queued job, write its run
+//      directory, start it;
+//   2. wait for one job to finish;
+//   3. classify its exit (outcome.h) and record it in one transaction;
+//      when that completes a series: extrapolate, store, rewrite the report.
+//
+// `run` works one study until it has no queued or running job; `daemon`
+// works every active study in submission order until stopped. On a stop
+// request in-flight jobs are killed and released (queued again, attempt not
+// spent), so a restart picks them up.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "exec/executor.h"
+#include "sched/progress.h"
+#include "store/store.h"
+
+namespace gridfree {
+
+struct SchedulerOptions {
+  std::optional<long long> study;   // run: this study only; daemon: nullopt (all)
+  int workers = 1;                  // jobs at once (-j)
+  int threads_per_job = 1;          // --threads of each worker (cores / j, at least 1)
+  double timeout_s = 0;             // per job; 0 = none
+  int max_attempts = 2;             // a retryable failure is tried once more
+  bool stop_when_idle = true;       // run: yes; daemon: no (poll for new work)
+  double idle_poll_s = 1.0;
+  std::filesystem::path runs_root;  // <db>.runs
+  std::string owner;                // claim owner (this_process_owner())
+  // Where a study's report goes (empty path = no report).
+  std::function<std::filesystem::path(const std::string& study_name)> report_dir;
+  std::function<bool()> stop_requested = [] { return false; };
+  Progress* progress = nullptr;
+};
+
+struct SchedulerSummary {
+  int finished = 0;     // jobs with a final result recorded
+  int converged = 0;
+  int failed = 0;       // final, not converged
+  int retried = 0;
+  int series_finished = 0;
+  bool interrupted = false;
+};
+
+// Startup recovery: requeues running jobs whose owner process is gone and
+// kills their orphaned workers (if still alive). Returns the number requeued.
+int recover_stale_jobs(Store& store);
+
+SchedulerSummary run_scheduler(Store& store, Executor& executor, const SchedulerOptions& options);
+
+// Rewrites the report of a study (logs and swallows report errors: the
+// results are safe in the store either way).
+void refresh_report(Store& store, long long study_id, const SchedulerOptions& options);
+
+}  // namespace gridfree

@@ -1,0 +1,166 @@
+// Series completion: extrapolation rows into the store; report data from the store.
+#include "sched/series_finish.h"
+
+#include <cmath>
+
+#include <spdlog/spdlog.h>
+
+#include "core/version.h"
+#include "report/report.h"
+
+namespace gridfree {
+namespace {
+
+std::optional<double> num(const nlohmann::json& j, const char* key) {
+  if (!j.is_object()) return std::nullopt;
+  auto it = j.find(key);
+  if (it == j.end() || !it->is_number()) return std::nullopt;
+  const double v = it->get<double>();
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+}  // namespace
+
+ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_id) {
+  ExtrapolatorSettings s;
+  const auto def = store.study_definition(study_id);
+  if (!def.is_object() || !def.contains("extrapolation")) return s;
+  const auto& e = def["extrapolation"];
+  if (e.contains("method") && e["method"].is_string()) s.method = e["method"].get<std::string>();
+  if (e.contains("p_range") && e["p_range"].is_array() && e["p_range"].size() == 2) {
+    s.p_low = e["p_range"][0].get<double>();
+    s.p_high = e["p_range"][1].get<double>();
+  }
+  return s;
+}
+
+void extrapolation_rows(const nlohmann::json& ex, const std::vector<SeriesPoint>& points,
+                        std::vector<ExtrapolationRow>& fits, std::vector<UncertaintyRow>& uncertainties) {
+  const std::string status = ex.value("status", std::string("unknown"));
+  const std::string method = ex.contains("method") && ex["method"].is_string() ? ex["method"].get<std::string>() : "";
+  const nlohmann::json fit_obj = ex.contains("fits") && ex["fits"].is_object() ? ex["fits"] : nlohmann::json::object();
+  for (const char* m : {"power", "mixed"}) {
+    ExtrapolationRow r;
+    r.method = m;
+    const nlohmann::json f = fit_obj.contains(m) ? fit_obj[m] : nlohmann::json::object();
+    r.f0 = num(f, "f0");
+    r.p = num(f, "p");
+    r.c = num(f, "c");
+    r.c1 = num(f, "c1");
+    r.c2 = num(f, "c2");
+    r.sigma_re = num(f, "sigma");
+    if (method == m && num(ex, "sigma_re")) r.sigma_re = num(ex, "sigma_re");
+    r.data_range = num(ex, "data_range");
+    r.fs = num(ex, "fs");
+    r.chosen = method == m;
+    r.status = status;
+    if (std::string(m) == "power" && f.contains("p_found") && f["p_found"].is_boolean() && !f["p_found"].get<bool>())
+      r.status += " (p not found)";
+    r.detail_json = f.dump();
+    fits.push_back(std::move(r));
+  }
+  if (!ex.contains("grids") || !ex["grids"].is_array()) return;
+  for (const auto& g : ex["grids"]) {
+    const auto h = num(g, "h");
+    if (!h) continue;
+    for (const auto& p : points) {
+      if (!p.dp_star || std::abs(p.delta_star - *h) > 1e-9 * std::max(1.0, std::abs(*h))) continue;
+      uncertainties.push_back({p.job_id, p.delta_star, num(g, "f"), num(g, "u"), num(g, "rde")});
+      break;
+    }
+  }
+}
+
+nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extrapolator& extrapolate) {
+  const auto points = store.series_points(series.id);
+  std::vector<double> h, f;
+  for (const auto& p : points)
+    if (p.result_status == "converged" && p.dp_star) {
+      h.push_back(p.delta_star);
+      f.push_back(*p.dp_star);
+    }
+  nlohmann::json ex;
+  if (h.size() < 2) {
+    ex = {{"status", "insufficient_grids"}, {"method", nullptr}};
+  } else {
+    try {
+      ex = extrapolate(h, f);
+    } catch (const std::exception& e) {
+      ex = {{"status", std::string("error: ") + e.what()}};
+    }
+  }
+  std::vector<ExtrapolationRow> fits;
+  std::vector<UncertaintyRow> unc;
+  extrapolation_rows(ex, points, fits, unc);
+  store.store_extrapolation(series.id, fits, unc);
+  spdlog::info("series {} complete: {} converged of {}; extrapolation {}{}", series.key.label(), h.size(),
+               points.size(), ex.value("status", std::string("?")),
+               num(ex, "f0") ? " f0 = " + std::to_string(*num(ex, "f0")) : std::string());
+  return ex;
+}
+
+int finish_ready_series(Store& store, long long study_id) {
+  int finished = 0;
+  const auto ready = store.series_ready(study_id);
+  if (!ready.empty()) {
+    const auto extrapolate = library_extrapolator(study_extrapolation_settings(store, study_id));
+    for (const auto& s : ready) {
+      finish_series(store, s, extrapolate);
+      ++finished;
+    }
+  }
+  store.refresh_study_status(study_id);
+  return finished;
+}
+
+StudyReportData build_report_data(Store& store, long long study_id) {
+  StudyReportData d;
+  const auto st = store.statuses(study_id);
+  if (!st.empty()) {
+    d.study_name = st.front().name;
+    d.status = st.front().status;
+    d.submitted_at = st.front().submitted_at;
+    d.finished_at = st.front().finished_at;
+    d.baseline_description = st.front().design;
+  }
+  d.version = version_string();
+  const auto settings = study_extrapolation_settings(store, study_id);
+  d.extrapolation_method = settings.method;
+  d.p_low = settings.p_low;
+  d.p_high = settings.p_high;
+  for (const auto& s : store.series_of_study(study_id)) {
+    SeriesData sd;
+    sd.id = s.id;
+    sd.case_name = s.key.case_name;
+    sd.convection = s.key.convection;
+    sd.drag = s.key.drag;
+    sd.deposition = s.key.deposition;
+    sd.fwhm_dp = s.key.fwhm_dp;
+    sd.status = s.status;
+    for (const auto& p : store.series_points(s.id)) {
+      GridPoint g;
+      g.job_hash = p.job_hash;
+      g.delta_star = p.delta_star;
+      g.nx = p.cells[0];
+      g.ny = p.cells[1];
+      g.nz = p.cells[2];
+      g.status = p.result_status.empty() ? p.job_status : p.result_status;
+      g.dp_star = p.dp_star;
+      g.reason = p.reason;
+      g.wall_s = p.wall_s;
+      g.cpu_s = p.cpu_s;
+      g.peak_rss_mb = p.peak_rss_mb;
+      g.iterations = p.iterations;
+      sd.grids.push_back(std::move(g));
+    }
+    d.series.push_back(std::move(sd));
+  }
+  return d;
+}
+
+std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir) {
+  const auto files = write_study_report(build_report_data(store, study_id), out_dir);
+  return files.html;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,40 @@
+// What happens when a series' last job finishes: extrapolate its converged
+// points (h = Δ*, f = dp_star; PHYSICS.md §8, through the report's
+// Extrapolator seam), store both fits ('power' and 'mixed', `chosen` on the
+// selected one) and one uncertainty row per converged job, mark it done.
+// Also: the study report, rebuilt from the store.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/extrapolator.h"
+#include "report/report_data.h"
+#include "store/store.h"
+
+namespace gridfree {
+
+// Extrapolation settings of a stored study (its definition's "extrapolation").
+ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_id);
+
+// Splits the contract extrapolation JSON (CONTRACT.md §4) into rows; grids
+// are matched to jobs by h.
+void extrapolation_rows(const nlohmann::json& ex, const std::vector<SeriesPoint>& points,
+                        std::vector<ExtrapolationRow>& fits, std::vector<UncertaintyRow>& uncertainties);
+
+// Extrapolates and stores one series. Returns the extrapolation JSON.
+nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extrapolator& extrapolate);
+
+// Finishes every ready series of the study and refreshes its status.
+// Returns the number of series finished.
+int finish_ready_series(Store& store, long long study_id);
+
+// Everything the report shows, from the store.
+StudyReportData build_report_data(Store& store, long long study_id);
+
+// build_report_data + write_study_report into out_dir; returns the HTML path.
+std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir);
+
+}  // namespace gridfree

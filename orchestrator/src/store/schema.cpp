@@ -1,0 +1,167 @@
+// Schema version 1. Status words (CONTRACT.md §5):
+//   jobs, studies: queued | running | done | failed | cancelled
+//   series:        queued | running | done | failed | cancelled
+// A job's `owner` names the process that claimed it ("host:pid:start"),
+// so a restart can tell a live claim from a stale one.
+#include "store/schema.h"
+
+#include <string>
+
+namespace gridfree {
+namespace {
+
+constexpr const char* kV1 = R"sql(
+CREATE TABLE studies(
+  id              INTEGER PRIMARY KEY,
+  name            TEXT NOT NULL UNIQUE,
+  definition_json TEXT NOT NULL,
+  status          TEXT NOT NULL DEFAULT 'queued'
+                  CHECK (status IN ('queued','running','done','failed','cancelled')),
+  submitted_at    TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now')),
+  finished_at     TEXT,
+  design          TEXT,
+  extrapolation_json TEXT
+);
+CREATE TABLE jobs(
+  id          INTEGER PRIMARY KEY,
+  job_hash    TEXT NOT NULL UNIQUE,
+  spec_json   TEXT NOT NULL,
+  status      TEXT NOT NULL DEFAULT 'queued'
+              CHECK (status IN ('queued','running','done','failed','cancelled')),
+  attempts    INTEGER NOT NULL DEFAULT 0,
+  started_at  TEXT,
+  finished_at TEXT,
+  error       TEXT,
+  owner       TEXT,
+  nx INTEGER, ny INTEGER, nz INTEGER,
+  cells       INTEGER,
+  delta_star  REAL,
+  result_path TEXT,
+  external_id TEXT
+);
+CREATE INDEX jobs_status ON jobs(status);
+CREATE TABLE series(
+  id         INTEGER PRIMARY KEY,
+  study_id   INTEGER NOT NULL REFERENCES studies(id) ON DELETE CASCADE,
+  position   INTEGER NOT NULL,
+  case_name  TEXT NOT NULL,
+  convection TEXT NOT NULL,
+  fwhm_dp    REAL NOT NULL,
+  drag       TEXT NOT NULL,
+  deposition TEXT NOT NULL DEFAULT 'diffusion',
+  status     TEXT NOT NULL DEFAULT 'queued'
+             CHECK (status IN ('queued','running','done','failed','cancelled')),
+  UNIQUE (study_id, case_name, convection, fwhm_dp, drag, deposition)
+);
+CREATE TABLE study_jobs(
+  study_id   INTEGER NOT NULL REFERENCES studies(id) ON DELETE CASCADE,
+  job_id     INTEGER NOT NULL REFERENCES jobs(id),
+  series_id  INTEGER NOT NULL REFERENCES series(id) ON DELETE CASCADE,
+  grid_index INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY (series_id, job_id)
+);
+CREATE INDEX study_jobs_job ON study_jobs(job_id);
+CREATE INDEX study_jobs_study ON study_jobs(study_id);
+CREATE TABLE results(
+  job_id      INTEGER PRIMARY KEY REFERENCES jobs(id),
+  status      TEXT NOT NULL
+              CHECK (status IN ('converged','not_converged','diverged','invalid','failed')),
+  dp_star     REAL,
+  delta_star  REAL,
+  nx INTEGER, ny INTEGER, nz INTEGER,
+  iterations  INTEGER,
+  wall_s      REAL,
+  cpu_s       REAL,
+  peak_rss_mb REAL,
+  result_json TEXT,
+  reason      TEXT,
+  recorded_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))
+);
+CREATE TABLE extrapolations(
+  series_id  INTEGER NOT NULL REFERENCES series(id) ON DELETE CASCADE,
+  method     TEXT NOT NULL,
+  f0 REAL, p REAL, c REAL, c1 REAL, c2 REAL,
+  sigma_re   REAL,
+  data_range REAL,
+  fs         REAL,
+  chosen     INTEGER NOT NULL DEFAULT 0,
+  status     TEXT,
+  detail_json TEXT,
+  PRIMARY KEY (series_id, method)
+);
+CREATE TABLE uncertainties(
+  series_id  INTEGER NOT NULL REFERENCES series(id) ON DELETE CASCADE,
+  job_id     INTEGER NOT NULL REFERENCES jobs(id),
+  delta_star REAL,
+  f          REAL,
+  u          REAL,
+  rde        REAL,
+  PRIMARY KEY (series_id, job_id)
+);
+CREATE TABLE events(
+  id       INTEGER PRIMARY KEY,
+  at       TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now')),
+  study_id INTEGER,
+  job_id   INTEGER,
+  kind     TEXT NOT NULL,
+  message  TEXT
+);
+CREATE VIEW v_results AS
+SELECT st.name        AS study,
+       se.id          AS series_id,
+       se.case_name   AS case_name,
+       se.convection  AS convection,
+       se.fwhm_dp     AS fwhm_dp,
+       se.drag        AS drag,
+       se.deposition  AS deposition,
+       sj.grid_index  AS grid_index,
+       j.id           AS job_id,
+       j.job_hash     AS job_hash,
+       j.status       AS job_status,
+       j.attempts     AS attempts,
+       COALESCE(r.delta_star, j.delta_star) AS delta_star,
+       COALESCE(r.nx, j.nx) AS nx,
+       COALESCE(r.ny, j.ny) AS ny,
+       COALESCE(r.nz, j.nz) AS nz,
+       r.status       AS result_status,
+       r.dp_star      AS dp_star,
+       r.iterations   AS iterations,
+       r.wall_s       AS wall_s,
+       r.cpu_s        AS cpu_s,
+       r.peak_rss_mb  AS peak_rss_mb,
+       COALESCE(r.reason, j.error) AS reason,
+       u.u            AS u,
+       u.rde          AS rde
+FROM study_jobs sj
+JOIN studies st ON st.id = sj.study_id
+JOIN series se  ON se.id = sj.series_id
+JOIN jobs j     ON j.id = sj.job_id
+LEFT JOIN results r ON r.job_id = j.id
+LEFT JOIN uncertainties u ON u.series_id = se.id AND u.job_id = j.id;
+)sql";
+
+}  // namespace
+
+int schema_version(Database& db) {
+  auto st = db.prepare("PRAGMA user_version");
+  st.step();
+  return static_cast<int>(st.as_int(0));
+}
+
+void migrate(Database& db) {
+  {
+    auto st = db.prepare("PRAGMA journal_mode = WAL");
+    st.step();
+  }
+  db.exec("PRAGMA synchronous = NORMAL");
+  Transaction tx(db);
+  const int v = schema_version(db);
+  if (v > kSchemaVersion)
+    throw SqliteError("database schema version " + std::to_string(v) + " is newer than this gridfree (" +
+                          std::to_string(kSchemaVersion) + ")", SQLITE_ERROR);
+  if (v < 1) db.exec(kV1);
+  db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
+  tx.commit();
+}
+
+}  // namespace gridfree

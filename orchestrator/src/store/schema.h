@@ -1,0 +1,17 @@
+// The database schema (CONTRACT.md §5 plus bookkeeping columns) and its
+// migrations, keyed by PRAGMA user_version.
+#pragma once
+
+#include "store/sqlite.h"
+
+namespace gridfree {
+
+inline constexpr int kSchemaVersion = 1;
+
+// Brings the database up to kSchemaVersion (WAL mode, tables, view) in one
+// transaction per step. Refuses a database newer than this program.
+void migrate(Database& db);
+
+int schema_version(Database& db);
+
+}  // namespace gridfree

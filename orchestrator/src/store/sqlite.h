@@ -1,0 +1,103 @@
+// Thin RAII wrappers over the sqlite3 C API: a connection, a prepared
+// statement, and a transaction that rolls back unless committed.
+// Every failure throws SqliteError with SQLite's message.
+#pragma once
+
+#include <sqlite3.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace gridfree {
+
+class SqliteError : public std::runtime_error {
+ public:
+  SqliteError(const std::string& what, int code) : std::runtime_error(what), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_;
+};
+
+class Statement;
+
+class Database {
+ public:
+  // Opens (create = also creates) the file; sets busy_timeout, foreign keys.
+  Database(const std::filesystem::path& file, bool create, int busy_timeout_ms = 10000);
+  ~Database();
+  Database(const Database&) = delete;
+  Database& operator=(const Database&) = delete;
+
+  void exec(std::string_view sql);               // one or more statements, no results
+  Statement prepare(std::string_view sql);
+  long long last_insert_rowid() const { return sqlite3_last_insert_rowid(db_); }
+  int changes() const { return sqlite3_changes(db_); }
+  sqlite3* handle() { return db_; }
+
+ private:
+  sqlite3* db_ = nullptr;
+};
+
+class Statement {
+ public:
+  Statement(sqlite3* db, std::string_view sql);
+  ~Statement();
+  Statement(Statement&& o) noexcept : db_(o.db_), st_(o.st_) { o.st_ = nullptr; }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+  Statement& operator=(Statement&&) = delete;
+
+  Statement& bind(int i, long long v);
+  Statement& bind(int i, int v) { return bind(i, static_cast<long long>(v)); }
+  Statement& bind(int i, double v);
+  Statement& bind(int i, const std::string& v);
+  Statement& bind(int i, const char* v) { return bind(i, std::string(v)); }
+  Statement& bind(int i, std::nullopt_t);
+  Statement& bind(int i, const std::optional<double>& v);
+  Statement& bind(int i, const std::optional<long long>& v);
+  Statement& bind(int i, const std::optional<std::string>& v);
+
+  // Binds every argument in order (1-based).
+  template <class... A>
+  Statement& bind_all(const A&... args) {
+    int i = 0;
+    (bind(++i, args), ...);
+    return *this;
+  }
+
+  bool step();       // true while a row is available
+  void run();        // steps to completion
+  void reset();
+
+  bool is_null(int col) const { return sqlite3_column_type(st_, col) == SQLITE_NULL; }
+  long long as_int(int col) const { return sqlite3_column_int64(st_, col); }
+  double as_double(int col) const { return sqlite3_column_double(st_, col); }
+  std::string as_text(int col) const;
+  std::optional<double> as_opt_double(int col) const;
+
+ private:
+  sqlite3* db_;
+  sqlite3_stmt* st_ = nullptr;
+};
+
+// BEGIN IMMEDIATE (takes the write lock at once) ... COMMIT; rolls back in
+// the destructor if commit() was not reached.
+class Transaction {
+ public:
+  explicit Transaction(Database& db, bool immediate = true);
+  ~Transaction();
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  void commit();
+
+ private:
+  Database& db_;
+  bool done_ = false;
+};
+
+}  // namespace gridfree

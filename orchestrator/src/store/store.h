@@ -1,0 +1,165 @@
+// The study/job store: SQLite in WAL mode (schema.h), shared by any number
+// of `gridfree run`/`daemon` processes. Every state change is one
+// transaction; a job is claimed inside BEGIN IMMEDIATE, so two processes
+// never run the same job. Job state machine:
+//
+//   queued --claim--> running --result--> done (converged) | failed (other)
+//      ^                 |  \--crash/timeout/garbage, attempts < max--> queued
+//      |                 \--owner process gone (requeue_stale) / released--> queued
+//   cancelled <--cancel-- queued
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "store/sqlite.h"
+#include "study/study.h"
+
+namespace gridfree {
+
+struct SubmitResult {
+  long long study_id = 0;
+  bool created = false;          // false: same study already there (resume)
+  std::size_t jobs_total = 0;
+  std::size_t jobs_new = 0;      // inserted by this submit
+  std::size_t jobs_reused = 0;   // already done in the store (any study)
+};
+
+struct ClaimedJob {
+  long long job_id = 0;
+  long long study_id = 0;
+  std::string job_hash;
+  nlohmann::json spec;           // the job document
+  int attempts = 0;              // including this one
+  std::array<int, 3> cells{};
+};
+
+// What the worker produced, ready to store (status: converged |
+// not_converged | diverged | invalid | failed).
+struct ResultRow {
+  std::string status = "failed";
+  std::optional<double> dp_star;
+  double delta_star = 0;
+  std::array<int, 3> cells{};
+  int iterations = 0;
+  double wall_s = 0, cpu_s = 0, peak_rss_mb = 0;
+  std::string reason;
+  std::string result_json;       // the result document, or "" when there is none
+};
+
+struct SeriesInfo {
+  long long id = 0, study_id = 0;
+  SeriesKey key;
+  std::string status;
+};
+
+struct SeriesPoint {             // one job of a series, with its result if any
+  long long job_id = 0;
+  std::string job_hash, job_status, result_status, reason;
+  double delta_star = 0;
+  std::array<int, 3> cells{};
+  std::optional<double> dp_star;
+  int iterations = 0;
+  double wall_s = 0, cpu_s = 0, peak_rss_mb = 0;
+};
+
+struct ExtrapolationRow {
+  std::string method;            // power | mixed
+  std::optional<double> f0, p, c, c1, c2, sigma_re, data_range, fs;
+  bool chosen = false;
+  std::string status;            // ok | insufficient_grids | p_not_found ...
+  std::string detail_json;
+};
+
+struct UncertaintyRow {
+  long long job_id = 0;
+  double delta_star = 0;
+  std::optional<double> f, u, rde;
+};
+
+struct StudyStatus {
+  long long id = 0;
+  std::string name, status, submitted_at, finished_at, design;
+  int jobs = 0, queued = 0, running = 0, done = 0, failed = 0, cancelled = 0;
+  int converged = 0;             // results with status converged
+  int series = 0, series_done = 0;
+  double mean_wall_s = 0;        // over this study's finished jobs
+};
+
+class Store {
+ public:
+  // Opens the database; `create` also creates the file. Migrates the schema.
+  explicit Store(const std::filesystem::path& file, bool create = true);
+
+  Database& db() { return db_; }
+  const std::filesystem::path& file() const { return file_; }
+
+  // Adds a study, its series and jobs in one transaction. The same name with
+  // the same definition is a resume (no-op; a cancelled study is queued
+  // again); the same name with another definition throws InputError.
+  SubmitResult submit(const Study& study, const ExpandedStudy& expanded);
+
+  std::optional<long long> study_id(const std::string& name);
+  std::vector<long long> active_studies();      // queued | running, oldest first
+
+  // Claims the next queued job (of `study`, or of any active study in
+  // submission order): running, attempts + 1, owner recorded. Atomic.
+  std::optional<ClaimedJob> claim_next(std::optional<long long> study, const std::string& owner);
+
+  // Records the final result of a running job owned by `owner` (job → done
+  // when converged, failed otherwise). False if the job is no longer ours.
+  bool record_result(long long job_id, const std::string& owner, const ResultRow& r);
+
+  // A failure worth one more try (crash, timeout, garbage): queued again
+  // while attempts < max_attempts, else recorded as a failed result.
+  // Returns true when the job was requeued.
+  bool record_retryable_failure(long long job_id, const std::string& owner, const ResultRow& r,
+                                int max_attempts);
+
+  // Puts a running job back to queued without spending an attempt
+  // (interrupted by a shutdown). False if the job is not ours.
+  bool release(long long job_id, const std::string& owner, const std::string& why);
+
+  // Requeues running jobs whose owner process is gone; returns their count.
+  int requeue_stale(const std::function<bool(const std::string& owner)>& alive);
+
+  void set_job_external_id(long long job_id, const std::string& external_id);
+  void set_job_paths(long long job_id, const std::string& result_path);
+
+  // Series whose jobs have all reached done/failed/cancelled but which are
+  // not marked done yet (ready for extrapolation).
+  std::vector<SeriesInfo> series_ready(long long study_id);
+  std::vector<SeriesInfo> series_of_study(long long study_id);
+  std::vector<SeriesPoint> series_points(long long series_id);
+
+  // Stores both fits and the per-job uncertainties, marks the series done.
+  void store_extrapolation(long long series_id, const std::vector<ExtrapolationRow>& fits,
+                           const std::vector<UncertaintyRow>& uncertainties);
+  std::vector<ExtrapolationRow> extrapolations(long long series_id);
+  std::vector<UncertaintyRow> uncertainties(long long series_id);
+
+  // Study status from its jobs and series: running while work is left,
+  // done when every job converged, failed when some did not; cancelled stays.
+  std::string refresh_study_status(long long study_id);
+
+  // Cancels a study: it and its queued jobs (unless another active study
+  // needs them) become cancelled. Running jobs finish. False if unknown.
+  bool cancel(const std::string& name);
+
+  std::vector<StudyStatus> statuses(std::optional<long long> study = std::nullopt);
+  nlohmann::json study_definition(long long study_id);
+  void log_event(std::optional<long long> study_id, std::optional<long long> job_id,
+                 const std::string& kind, const std::string& message);
+
+ private:
+  std::filesystem::path file_;
+  Database db_;
+};
+
+}  // namespace gridfree

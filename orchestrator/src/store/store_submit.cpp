@@ -1,0 +1,140 @@
+// Store: opening, submitting a study (one transaction), cancelling.
+#include "core/input_error.h"
+#include "store/schema.h"
+#include "store/store.h"
+
+namespace gridfree {
+
+Store::Store(const std::filesystem::path& file, bool create) : file_(file), db_(file, create) {
+  migrate(db_);
+}
+
+std::optional<long long> Store::study_id(const std::string& name) {
+  auto st = db_.prepare("SELECT id FROM studies WHERE name = ?");
+  st.bind_all(name);
+  if (!st.step()) return std::nullopt;
+  return st.as_int(0);
+}
+
+nlohmann::json Store::study_definition(long long id) {
+  auto st = db_.prepare("SELECT definition_json FROM studies WHERE id = ?");
+  st.bind_all(id);
+  if (!st.step()) return nullptr;
+  return nlohmann::json::parse(st.as_text(0));
+}
+
+SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded) {
+  // Stored as JSON text; compared as JSON values (key order, 20 vs 20.0 do not matter).
+  const std::string definition = study.definition.dump();
+  SubmitResult out;
+  out.jobs_total = expanded.jobs.size();
+  Transaction tx(db_);
+  {
+    auto st = db_.prepare("SELECT id, definition_json, status FROM studies WHERE name = ?");
+    st.bind_all(study.name);
+    if (st.step()) {
+      if (nlohmann::json::parse(st.as_text(1)) != study.definition)
+        throw InputError("/name", "a different study named '" + study.name +
+                                      "' is already in " + file_.filename().string() +
+                                      "; rename the study or use another --db");
+      out.study_id = st.as_int(0);
+      const bool cancelled = st.as_text(2) == "cancelled";
+      if (cancelled) {
+        auto up = db_.prepare(
+            "UPDATE jobs SET status = 'queued', error = NULL WHERE status = 'cancelled' AND id IN "
+            "(SELECT job_id FROM study_jobs WHERE study_id = ?)");
+        up.bind_all(out.study_id).run();
+        db_.prepare("UPDATE series SET status = 'queued' WHERE study_id = ? AND status = 'cancelled'")
+            .bind_all(out.study_id).run();
+        db_.prepare("UPDATE studies SET status = 'queued', finished_at = NULL WHERE id = ?")
+            .bind_all(out.study_id).run();
+      }
+      tx.commit();
+      return out;
+    }
+  }
+  nlohmann::json extrap = {{"weights", study.extrapolation.weights},
+                           {"p_range", {study.extrapolation.p_low, study.extrapolation.p_high}},
+                           {"method", study.extrapolation.method}};
+  db_.prepare("INSERT INTO studies(name, definition_json, design, extrapolation_json) VALUES (?, ?, ?, ?)")
+      .bind_all(study.name, definition, study.design_description(), extrap.dump())
+      .run();
+  out.study_id = db_.last_insert_rowid();
+  out.created = true;
+
+  std::vector<long long> series_ids;
+  auto ins_series = db_.prepare(
+      "INSERT INTO series(study_id, position, case_name, convection, fwhm_dp, drag, deposition) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?)");
+  for (std::size_t i = 0; i < expanded.series.size(); ++i) {
+    const auto& k = expanded.series[i];
+    ins_series.reset();
+    ins_series.bind_all(out.study_id, static_cast<long long>(i), k.case_name, k.convection, k.fwhm_dp, k.drag,
+                        k.deposition).run();
+    series_ids.push_back(db_.last_insert_rowid());
+  }
+  auto ins_job = db_.prepare(
+      "INSERT OR IGNORE INTO jobs(job_hash, spec_json, nx, ny, nz, cells, delta_star) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?)");
+  auto find_job = db_.prepare("SELECT id, status FROM jobs WHERE job_hash = ?");
+  auto requeue = db_.prepare("UPDATE jobs SET status = 'queued', error = NULL WHERE id = ? AND status = 'cancelled'");
+  auto link = db_.prepare(
+      "INSERT OR IGNORE INTO study_jobs(study_id, job_id, series_id, grid_index) VALUES (?, ?, ?, ?)");
+  for (const auto& job : expanded.jobs) {
+    const long long cells = static_cast<long long>(job.cells[0]) * job.cells[1] * job.cells[2];
+    ins_job.reset();
+    ins_job.bind_all(job.hash, job.doc.dump(), job.cells[0], job.cells[1], job.cells[2], cells, job.delta_star)
+        .run();
+    const bool inserted = db_.changes() > 0;
+    find_job.reset();
+    find_job.bind_all(job.hash);
+    find_job.step();
+    const long long job_id = find_job.as_int(0);
+    const std::string status = find_job.as_text(1);
+    if (inserted)
+      ++out.jobs_new;
+    else if (status == "done")
+      ++out.jobs_reused;
+    requeue.reset();
+    requeue.bind_all(job_id).run();
+    link.reset();
+    link.bind_all(out.study_id, job_id, series_ids.at(job.series), static_cast<long long>(job.grid)).run();
+  }
+  db_.prepare("INSERT INTO events(study_id, kind, message) VALUES (?, 'submit', ?)")
+      .bind_all(out.study_id, std::to_string(out.jobs_total) + " jobs, " + std::to_string(out.jobs_new) +
+                                  " new, " + std::to_string(out.jobs_reused) + " already done")
+      .run();
+  tx.commit();
+  return out;
+}
+
+bool Store::cancel(const std::string& name) {
+  Transaction tx(db_);
+  auto id = study_id(name);
+  if (!id) return false;
+  // Queued jobs of this study that no other active study shares.
+  db_.prepare(
+         "UPDATE jobs SET status = 'cancelled', error = 'study cancelled' WHERE status = 'queued' AND id IN "
+         "(SELECT job_id FROM study_jobs WHERE study_id = ?1) AND id NOT IN "
+         "(SELECT sj.job_id FROM study_jobs sj JOIN studies s ON s.id = sj.study_id "
+         " WHERE sj.study_id <> ?1 AND s.status IN ('queued','running'))")
+      .bind_all(*id).run();
+  db_.prepare("UPDATE series SET status = 'cancelled' WHERE study_id = ? AND status IN ('queued','running')")
+      .bind_all(*id).run();
+  db_.prepare(
+         "UPDATE studies SET status = 'cancelled', finished_at = strftime('%Y-%m-%dT%H:%M:%fZ','now') "
+         "WHERE id = ? AND status IN ('queued','running')")
+      .bind_all(*id).run();
+  db_.prepare("INSERT INTO events(study_id, kind, message) VALUES (?, 'cancel', 'study cancelled')")
+      .bind_all(*id).run();
+  tx.commit();
+  return true;
+}
+
+void Store::log_event(std::optional<long long> study, std::optional<long long> job, const std::string& kind,
+                      const std::string& message) {
+  db_.prepare("INSERT INTO events(study_id, job_id, kind, message) VALUES (?, ?, ?, ?)")
+      .bind_all(study, job, kind, message).run();
+}
+
+}  // namespace gridfree

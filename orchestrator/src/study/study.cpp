@@ -1,0 +1,34 @@
+// Small Study / SeriesKey helpers (labels, look-ups, Δ* of a grid).
+#include "study/study.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace gridfree {
+
+std::string SeriesKey::label() const {
+  char fwhm[32];
+  std::snprintf(fwhm, sizeof fwhm, "%g", fwhm_dp);
+  std::string out = case_name + " " + convection + " fwhm" + fwhm + " " + drag;
+  if (deposition != "diffusion") out += " " + deposition;
+  return out;
+}
+
+const StudyCase* Study::find_case(const std::string& n) const {
+  for (const auto& c : cases)
+    if (c.name == n) return &c;
+  return nullptr;
+}
+
+std::string Study::design_description() const {
+  if (!baseline) return "factorial";
+  return "one_at_a_time (baseline " + baseline->label() + ")";
+}
+
+double delta_star_of(const std::array<double, 3>& domain_dp, const std::array<int, 3>& cells) {
+  const double v = domain_dp[0] * domain_dp[1] * domain_dp[2];
+  const double n = static_cast<double>(cells[0]) * cells[1] * cells[2];
+  return std::cbrt(v / n);
+}
+
+}  // namespace gridfree

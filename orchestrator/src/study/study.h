@@ -1,0 +1,106 @@
+// A grid-convergence study (CONTRACT.md §3): cases × factor levels × grids.
+//
+// parse_study() reads and validates a study file (schema + semantics, every
+// problem with its JSON pointer); expand() turns it into series and jobs.
+// A series is one (case, convection, fwhm_dp, drag, deposition) over all
+// grids; a job is one series on one grid: the full job document of
+// CONTRACT.md §2 and its job_hash.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "job/job_spec.h"
+
+namespace gridfree {
+
+// The factor levels of one series.
+struct SeriesKey {
+  std::string case_name;
+  std::string convection = "superbee";
+  double fwhm_dp = 6;
+  std::string drag = "bvk";
+  std::string deposition = "diffusion";  // "diffusion" | "centroid"
+
+  auto operator<=>(const SeriesKey&) const = default;
+  std::string label() const;  // "PC1 superbee fwhm6 bvk" (+ " centroid")
+};
+
+struct StudyFactors {
+  std::vector<std::string> convection, drag, deposition;
+  std::vector<double> fwhm_dp;
+};
+
+struct StudyCase {
+  std::string name;
+  nlohmann::json doc;  // the case object, "name" set, particle file path made absolute
+  CaseSpec spec;
+};
+
+struct ExtrapolationSettings {
+  std::string weights = "inverse_h";
+  double p_low = 0.5, p_high = 2.1;
+  std::string method = "fm";  // fm | eh14
+};
+
+struct Study {
+  std::string name;
+  nlohmann::json definition;        // the study document as read
+  std::filesystem::path base_dir;   // folder of the study file
+  std::vector<StudyCase> cases;     // in file order
+  StudyFactors factors;             // levels as given (missing factor = its default)
+  std::optional<SeriesKey> baseline;  // set for one_at_a_time designs
+  std::vector<double> grid_delta_star;            // grids: {"delta_star": [...]}
+  std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}
+  nlohmann::json numerics = nlohmann::json::object();  // merged into every job
+  ExtrapolationSettings extrapolation;
+
+  const StudyCase* find_case(const std::string& name) const;
+  std::string design_description() const;  // "factorial" or "one_at_a_time (baseline ...)"
+};
+
+struct StudyJob {
+  std::size_t series = 0;          // index into ExpandedStudy::series
+  std::size_t grid = 0;            // index of the grid in the study's list
+  std::array<int, 3> cells{};
+  double delta_star = 0;           // (V/N)^(1/3)/d of this grid, actual
+  nlohmann::json doc;              // the job document
+  std::string hash;                // job_hash(doc)
+};
+
+struct ExpandedStudy {
+  std::vector<SeriesKey> series;
+  std::vector<StudyJob> jobs;      // series-major, grids in the study's order
+};
+
+// Reads, validates and parses a study file. Throws InputError with every
+// problem found (JSON pointer + reason).
+Study parse_study(const std::filesystem::path& file);
+
+// Validates and parses an already-read document (base_dir resolves relative
+// particle files). Throws InputError.
+Study parse_study_document(const nlohmann::json& doc, const std::filesystem::path& base_dir);
+
+// The series of the design, without duplicates, baseline first.
+std::vector<SeriesKey> design_series(const Study& study);
+
+// Cells of every grid of the study for one case.
+std::vector<std::array<int, 3>> grids_for_case(const Study& study, const StudyCase& c);
+
+// Builds one job document (CONTRACT.md §2) for a series on a grid.
+nlohmann::json make_job_document(const Study& study, const SeriesKey& key,
+                                 const std::array<int, 3>& cells);
+
+// Series and jobs of the study, hashed.
+ExpandedStudy expand(const Study& study);
+
+// Δ* = (L*x L*y L*z / N)^(1/3) for a domain in particle diameters.
+double delta_star_of(const std::array<double, 3>& domain_dp, const std::array<int, 3>& cells);
+
+}  // namespace gridfree

@@ -1,0 +1,110 @@
+// expand(): a Study → its series (the design) and one job per (series, grid).
+//
+// factorial:      every case × convection × fwhm_dp × drag × deposition;
+// one_at_a_time:  the baseline, then each other case and each other level of
+//                 each factor varied alone from it: 1 + Σ_f (levels_f − 1)
+//                 series (cases count as a factor). No duplicates.
+// Grids: cells = round(L*/Δ*) per direction (cells_for_delta_star) per case,
+// or the explicit cells. Each job document is CONTRACT.md §2's job with the
+// study's numerics merged in, identified by job_hash.
+#include <cmath>
+#include <set>
+
+#include "grid/grid.h"
+#include "job/job_hash.h"
+#include "study/study.h"
+
+namespace gridfree {
+
+std::vector<SeriesKey> design_series(const Study& s) {
+  std::vector<SeriesKey> out;
+  std::set<SeriesKey> seen;
+  auto add = [&](const SeriesKey& k) {
+    if (seen.insert(k).second) out.push_back(k);
+  };
+  const auto& f = s.factors;
+  if (s.baseline) {
+    const SeriesKey& b = *s.baseline;
+    add(b);
+    for (const auto& c : s.cases) {
+      SeriesKey k = b;
+      k.case_name = c.name;
+      add(k);
+    }
+    for (const auto& v : f.convection) {
+      SeriesKey k = b;
+      k.convection = v;
+      add(k);
+    }
+    for (double v : f.fwhm_dp) {
+      SeriesKey k = b;
+      k.fwhm_dp = v;
+      add(k);
+    }
+    for (const auto& v : f.drag) {
+      SeriesKey k = b;
+      k.drag = v;
+      add(k);
+    }
+    for (const auto& v : f.deposition) {
+      SeriesKey k = b;
+      k.deposition = v;
+      add(k);
+    }
+    return out;
+  }
+  for (const auto& c : s.cases)
+    for (const auto& conv : f.convection)
+      for (double w : f.fwhm_dp)
+        for (const auto& d : f.drag)
+          for (const auto& dep : f.deposition) add(SeriesKey{c.name, conv, w, d, dep});
+  return out;
+}
+
+std::vector<std::array<int, 3>> grids_for_case(const Study& s, const StudyCase& c) {
+  if (!s.grid_cells.empty()) return s.grid_cells;
+  std::vector<std::array<int, 3>> out;
+  for (double ds : s.grid_delta_star) out.push_back(cells_for_delta_star(c.spec.domain_dp, ds));
+  return out;
+}
+
+nlohmann::json make_job_document(const Study& s, const SeriesKey& key, const std::array<int, 3>& cells) {
+  const StudyCase* c = s.find_case(key.case_name);
+  nlohmann::json numerics = s.numerics.is_object() ? s.numerics : nlohmann::json::object();
+  numerics["grid"] = {{"cells", {cells[0], cells[1], cells[2]}}};
+  numerics["convection"] = key.convection;
+  numerics["drag"] = key.drag;
+  nlohmann::json dep = numerics.contains("deposition") && numerics["deposition"].is_object()
+                           ? numerics["deposition"] : nlohmann::json::object();
+  dep["kind"] = key.deposition;
+  dep["fwhm_dp"] = key.fwhm_dp;
+  numerics["deposition"] = dep;
+  return {{"schema", "gridfree/job/1"},
+          {"case", c != nullptr ? c->doc : nlohmann::json::object()},
+          {"numerics", numerics}};
+}
+
+ExpandedStudy expand(const Study& s) {
+  ExpandedStudy out;
+  out.series = design_series(s);
+  for (std::size_t si = 0; si < out.series.size(); ++si) {
+    const auto& key = out.series[si];
+    const StudyCase* c = s.find_case(key.case_name);
+    if (c == nullptr) continue;
+    const auto grids = grids_for_case(s, *c);
+    std::set<std::string> hashes;
+    for (std::size_t g = 0; g < grids.size(); ++g) {
+      StudyJob job;
+      job.series = si;
+      job.grid = g;
+      job.cells = grids[g];
+      job.delta_star = delta_star_of(c->spec.domain_dp, grids[g]);
+      job.doc = make_job_document(s, key, grids[g]);
+      job.hash = job_hash(job.doc);
+      if (hashes.insert(job.hash).second) out.jobs.push_back(std::move(job));
+    }
+  }
+  return out;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,440 @@
+// parse_study: a study file → Study, after the schema (schemas/study.schema.json)
+// and the semantic checks of CONTRACT.md §3/§4. Every problem is collected
+// with its JSON pointer before one InputError is thrown.
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/input_error.h"
+#include "core/schema_validation.h"
+#include "drag/drag_law.h"
+#include "job/job_spec.h"
+#include "schemes/limiter.h"
+#include "study/study.h"
+#include "study/study_plan.h"
+
+namespace gridfree {
+namespace {
+
+using nlohmann::json;
+
+std::string pointer_token(const std::string& key) {
+  std::string out;
+  for (char c : key) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
+
+bool has_problem_at(const ProblemList& problems, const std::string& where) {
+  return std::any_of(problems.problems().begin(), problems.problems().end(),
+                     [&](const Problem& p) { return p.where == where; });
+}
+
+// Adds a problem unless one was already reported at the same place.
+void add_once(ProblemList& problems, const std::string& where, std::string reason) {
+  if (!has_problem_at(problems, where)) problems.add(where, std::move(reason));
+}
+
+bool is_number(const json& j) { return j.is_number() && !j.is_boolean(); }
+
+// Checks parse_case may or may not make; each reported once per pointer.
+void check_case_physics(const json& c, const std::string& at, const std::filesystem::path& base_dir,
+                        ProblemList& problems) {
+  if (!c.is_object()) return;
+  if (auto g = c.find("gas"); g != c.end() && g->is_object()) {
+    if (auto mu = g->find("viscosity_g_cm_s"); mu != g->end() && is_number(*mu) && mu->get<double>() <= 0)
+      add_once(problems, at + "/gas/viscosity_g_cm_s", "gas viscosity must be positive");
+    if (auto rho = g->find("density_g_cm3"); rho != g->end() && is_number(*rho) && rho->get<double>() <= 0)
+      add_once(problems, at + "/gas/density_g_cm3", "gas density must be positive");
+  }
+  if (auto b = c.find("boundaries"); b != c.end() && b->is_object()) {
+    for (const char* side : {"y_low", "y_high"}) {
+      auto s = b->find(side);
+      if (s == b->end() || !s->is_object()) continue;
+      auto u = s->find("superficial_velocity_cm_s");
+      if (u != s->end() && is_number(*u) && u->get<double>() < 0)
+        add_once(problems, at + "/boundaries/" + side + "/superficial_velocity_cm_s",
+                 "inflow velocity must not be negative");
+    }
+  }
+  double ly = -1;
+  if (auto d = c.find("domain_dp"); d != c.end() && d->is_array()) {
+    for (std::size_t a = 0; a < d->size(); ++a) {
+      const auto& v = (*d)[a];
+      if (is_number(v) && v.get<double>() <= 0)
+        add_once(problems, at + "/domain_dp/" + std::to_string(a), "domain size must be positive");
+    }
+    if (d->size() == 3 && is_number((*d)[1])) ly = (*d)[1].get<double>();
+  }
+  if (auto p = c.find("probes"); p != c.end() && p->is_object() && ly > 0) {
+    if (auto dp = p->find("pressure_drop"); dp != p->end() && dp->is_object()) {
+      for (const char* key : {"y1_dp", "y2_dp"}) {
+        auto y = dp->find(key);
+        if (y == dp->end() || !is_number(*y)) continue;
+        const double v = y->get<double>();
+        if (v <= 0 || v >= ly)
+          add_once(problems, at + "/probes/pressure_drop/" + key,
+                   "probe at y* = " + y->dump() + " is outside the domain (0, " + json(ly).dump() + ")");
+      }
+    }
+  }
+  if (auto parts = c.find("particles"); parts != c.end() && parts->is_object()) {
+    if (auto f = parts->find("file"); f != parts->end() && f->is_string()) {
+      std::filesystem::path path = f->get<std::string>();
+      if (path.is_relative()) path = base_dir / path;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec))
+        add_once(problems, at + "/particles/file", "particle file '" + f->get<std::string>() + "' not found");
+    }
+  }
+}
+
+std::vector<std::string> string_levels(const json& f, const std::string& at, ProblemList& problems) {
+  std::vector<std::string> out;
+  if (!f.is_array()) {
+    add_once(problems, at, "must be an array of names");
+    return out;
+  }
+  if (f.empty()) add_once(problems, at, "a factor needs at least one level");
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (!f[i].is_string()) {
+      add_once(problems, at + "/" + std::to_string(i), "must be a string");
+      continue;
+    }
+    auto name = f[i].get<std::string>();
+    if (std::find(out.begin(), out.end(), name) != out.end())
+      add_once(problems, at + "/" + std::to_string(i), "level '" + name + "' is listed twice");
+    out.push_back(name);
+  }
+  return out;
+}
+
+void check_names(const std::vector<std::string>& levels, const std::string& at, ProblemList& problems,
+                 bool (*known)(const std::string&), const std::string& valid) {
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    if (!known(levels[i]))
+      add_once(problems, at + "/" + std::to_string(i), "unknown '" + levels[i] + "'; valid: " + valid);
+}
+
+bool known_convection(const std::string& n) { return limiter_from_name(n).has_value(); }
+bool known_drag(const std::string& n) { return drag_law_from_name(n).has_value(); }
+bool known_deposition(const std::string& n) { return n == "diffusion" || n == "centroid"; }
+
+void parse_factors(const json& doc, Study& s, ProblemList& problems) {
+  auto f = doc.find("factors");
+  if (f == doc.end()) return;
+  if (!f->is_object()) {
+    add_once(problems, "/factors", "must be an object");
+    return;
+  }
+  for (auto it = f->begin(); it != f->end(); ++it) {
+    const std::string at = "/factors/" + pointer_token(it.key());
+    if (it.key() == "convection") {
+      s.factors.convection = string_levels(*it, at, problems);
+      check_names(s.factors.convection, at, problems, known_convection, limiter_names());
+    } else if (it.key() == "drag") {
+      s.factors.drag = string_levels(*it, at, problems);
+      check_names(s.factors.drag, at, problems, known_drag, drag_law_names());
+    } else if (it.key() == "deposition") {
+      s.factors.deposition = string_levels(*it, at, problems);
+      check_names(s.factors.deposition, at, problems, known_deposition, "diffusion, centroid");
+    } else if (it.key() == "fwhm_dp") {
+      if (!it->is_array()) {
+        add_once(problems, at, "must be an array of numbers");
+        continue;
+      }
+      if (it->empty()) add_once(problems, at, "a factor needs at least one level");
+      for (std::size_t i = 0; i < it->size(); ++i) {
+        const auto& v = (*it)[i];
+        if (!is_number(v) || v.get<double>() <= 0) {
+          add_once(problems, at + "/" + std::to_string(i), "filter width must be a positive number");
+          continue;
+        }
+        const double w = v.get<double>();
+        if (std::find(s.factors.fwhm_dp.begin(), s.factors.fwhm_dp.end(), w) != s.factors.fwhm_dp.end())
+          add_once(problems, at + "/" + std::to_string(i), "level listed twice");
+        s.factors.fwhm_dp.push_back(w);
+      }
+    } else {
+      add_once(problems, at, "unknown factor; valid: convection, fwhm_dp, drag, deposition");
+    }
+  }
+}
+
+// Numerics defaults for a factor not listed: the study's numerics, else the job defaults.
+void default_factors(Study& s) {
+  const json& n = s.numerics;
+  if (s.factors.convection.empty())
+    s.factors.convection = {n.contains("convection") && n["convection"].is_string()
+                                ? n["convection"].get<std::string>() : "superbee"};
+  if (s.factors.drag.empty())
+    s.factors.drag = {n.contains("drag") && n["drag"].is_string() ? n["drag"].get<std::string>() : "bvk"};
+  const json dep = n.contains("deposition") && n["deposition"].is_object() ? n["deposition"] : json::object();
+  if (s.factors.deposition.empty())
+    s.factors.deposition = {dep.contains("kind") && dep["kind"].is_string() ? dep["kind"].get<std::string>()
+                                                                           : "diffusion"};
+  if (s.factors.fwhm_dp.empty())
+    s.factors.fwhm_dp = {dep.contains("fwhm_dp") && is_number(dep["fwhm_dp"]) ? dep["fwhm_dp"].get<double>() : 6.0};
+}
+
+template <class T>
+bool contains(const std::vector<T>& v, const T& x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+
+void parse_design(const json& doc, Study& s, ProblemList& problems) {
+  auto d = doc.find("design");
+  if (d == doc.end() || (d->is_string() && *d == "factorial")) return;
+  if (!d->is_object() || !d->contains("one_at_a_time") || !(*d)["one_at_a_time"].is_object()) {
+    add_once(problems, "/design", "must be \"factorial\" or {\"one_at_a_time\": {baseline}}");
+    return;
+  }
+  const json& b = (*d)["one_at_a_time"];
+  const std::string at = "/design/one_at_a_time";
+  SeriesKey key;
+  key.case_name = s.cases.empty() ? "" : s.cases.front().name;
+  key.convection = s.factors.convection.front();
+  key.drag = s.factors.drag.front();
+  key.deposition = s.factors.deposition.front();
+  key.fwhm_dp = s.factors.fwhm_dp.front();
+  for (auto it = b.begin(); it != b.end(); ++it) {
+    const std::string where = at + "/" + pointer_token(it.key());
+    const std::string& k = it.key();
+    if (k == "fwhm_dp") {
+      if (!is_number(*it)) {
+        add_once(problems, where, "must be a number");
+        continue;
+      }
+      key.fwhm_dp = it->get<double>();
+      if (!contains(s.factors.fwhm_dp, key.fwhm_dp))
+        add_once(problems, where, "baseline fwhm_dp " + it->dump() + " is not a level of /factors/fwhm_dp");
+      continue;
+    }
+    if (!it->is_string()) {
+      add_once(problems, where, "must be a string");
+      continue;
+    }
+    const std::string v = it->get<std::string>();
+    if (k == "case") {
+      key.case_name = v;
+      if (s.find_case(v) == nullptr) add_once(problems, where, "unknown case '" + v + "' (not in /cases)");
+    } else if (k == "convection" || k == "drag" || k == "deposition") {
+      const auto& levels = k == "convection" ? s.factors.convection
+                           : k == "drag"     ? s.factors.drag
+                                             : s.factors.deposition;
+      (k == "convection" ? key.convection : k == "drag" ? key.drag : key.deposition) = v;
+      if (!contains(levels, v))
+        add_once(problems, where, "baseline " + k + " '" + v + "' is not a level of /factors/" + k);
+    } else {
+      add_once(problems, where, "unknown baseline field; valid: case, convection, fwhm_dp, drag, deposition");
+    }
+  }
+  s.baseline = key;
+}
+
+void parse_grids(const json& doc, Study& s, ProblemList& problems) {
+  auto g = doc.find("grids");
+  if (g == doc.end() || !g->is_object()) {
+    add_once(problems, "/grids", "required: {\"delta_star\": [...]} or {\"cells\": [[nx,ny,nz], ...]}");
+    return;
+  }
+  const bool ds = g->contains("delta_star"), cs = g->contains("cells");
+  if (ds == cs) {
+    add_once(problems, "/grids", "give exactly one of delta_star and cells");
+    return;
+  }
+  if (ds) {
+    const json& a = (*g)["delta_star"];
+    if (!a.is_array() || a.empty()) {
+      add_once(problems, "/grids/delta_star", "must be a non-empty array of positive numbers");
+      return;
+    }
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (!is_number(a[i]) || !(a[i].get<double>() > 0) || !std::isfinite(a[i].get<double>())) {
+        add_once(problems, "/grids/delta_star/" + std::to_string(i), "cell size Δ* must be a positive number");
+        continue;
+      }
+      s.grid_delta_star.push_back(a[i].get<double>());
+    }
+    return;
+  }
+  const json& a = (*g)["cells"];
+  if (!a.is_array() || a.empty()) {
+    add_once(problems, "/grids/cells", "must be a non-empty array of [nx, ny, nz]");
+    return;
+  }
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::string at = "/grids/cells/" + std::to_string(i);
+    if (!a[i].is_array() || a[i].size() != 3) {
+      add_once(problems, at, "must be [nx, ny, nz]");
+      continue;
+    }
+    std::array<int, 3> c{};
+    bool ok = true;
+    for (int k = 0; k < 3; ++k) {
+      const json& v = a[i][k];
+      if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000) {
+        add_once(problems, at + "/" + std::to_string(k), "cells must be an integer ≥ 1");
+        ok = false;
+        continue;
+      }
+      c[k] = v.get<int>();
+    }
+    if (ok) s.grid_cells.push_back(c);
+  }
+}
+
+void parse_extrapolation(const json& doc, Study& s, ProblemList& problems) {
+  auto e = doc.find("extrapolation");
+  if (e == doc.end()) return;
+  if (!e->is_object()) {
+    add_once(problems, "/extrapolation", "must be an object");
+    return;
+  }
+  if (auto w = e->find("weights"); w != e->end()) {
+    if (!w->is_string() || (*w != "inverse_h" && *w != "uniform"))
+      add_once(problems, "/extrapolation/weights", "must be \"inverse_h\" or \"uniform\"");
+    else
+      s.extrapolation.weights = w->get<std::string>();
+  }
+  if (auto m = e->find("method"); m != e->end()) {
+    if (!m->is_string() || (*m != "fm" && *m != "eh14"))
+      add_once(problems, "/extrapolation/method", "must be \"fm\" or \"eh14\"");
+    else
+      s.extrapolation.method = m->get<std::string>();
+  }
+  if (auto p = e->find("p_range"); p != e->end()) {
+    if (!p->is_array() || p->size() != 2 || !is_number((*p)[0]) || !is_number((*p)[1]) ||
+        !((*p)[0].get<double>() < (*p)[1].get<double>()))
+      add_once(problems, "/extrapolation/p_range", "must be [low, high] with low < high");
+    else {
+      s.extrapolation.p_low = (*p)[0].get<double>();
+      s.extrapolation.p_high = (*p)[1].get<double>();
+    }
+  }
+}
+
+void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& s, ProblemList& problems) {
+  auto cs = doc.find("cases");
+  if (cs == doc.end() || !cs->is_object() || cs->empty()) {
+    add_once(problems, "/cases", "at least one case is required");
+    return;
+  }
+  for (auto it = cs->begin(); it != cs->end(); ++it) {
+    const std::string at = "/cases/" + pointer_token(it.key());
+    if (!it->is_object()) {
+      add_once(problems, at, "a case must be an object");
+      continue;
+    }
+    StudyCase c;
+    c.name = it.key();
+    c.doc = *it;
+    if (!c.doc.contains("name")) c.doc["name"] = c.name;
+    ProblemList case_problems;
+    try {
+      c.spec = parse_case(c.doc, at, base_dir, case_problems);
+    } catch (const InputError& e) {
+      case_problems.append(e.problems());
+    }
+    check_case_physics(c.doc, at, base_dir, case_problems);
+    for (const auto& p : case_problems.problems()) add_once(problems, p.where, p.reason);
+    // The job is run from another folder: particle files become absolute.
+    if (c.doc.contains("particles") && c.doc["particles"].is_object() &&
+        c.doc["particles"].contains("file") && c.doc["particles"]["file"].is_string()) {
+      std::filesystem::path f = c.doc["particles"]["file"].get<std::string>();
+      if (f.is_relative()) c.doc["particles"]["file"] = std::filesystem::absolute(base_dir / f).lexically_normal().string();
+    }
+    s.cases.push_back(std::move(c));
+  }
+}
+
+// Grids that are equal for a case, memory above the machine's.
+void check_grids(const Study& s, ProblemList& problems) {
+  const double machine = static_cast<double>(physical_memory_bytes());
+  const std::string list = s.grid_delta_star.empty() ? "/grids/cells/" : "/grids/delta_star/";
+  for (const auto& c : s.cases) {
+    const auto grids = grids_for_case(s, c);
+    for (std::size_t i = 0; i < grids.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j)
+        if (grids[i] == grids[j])
+          add_once(problems, list + std::to_string(i),
+                   "gives the same cells as " + list + std::to_string(j) + " for case " + c.name);
+      const double mem = estimated_memory_bytes(grids[i]);
+      if (machine > 0 && mem > machine)
+        add_once(problems, list + std::to_string(i),
+                 "estimated memory " + human_bytes(mem) + " exceeds this machine's " + human_bytes(machine));
+    }
+  }
+}
+
+// parse_job on one job per series catches numerics problems (tolerances,
+// iterations, ...) with the job's own rules; pointers map back to the study.
+void check_jobs(const Study& s, ProblemList& problems) {
+  for (const auto& key : design_series(s)) {
+    const StudyCase* c = s.find_case(key.case_name);
+    if (c == nullptr) continue;
+    const auto grids = grids_for_case(s, *c);
+    if (grids.empty()) continue;
+    try {
+      parse_job(make_job_document(s, key, grids.front()), s.base_dir);
+    } catch (const InputError& e) {
+      for (const auto& p : e.problems()) {
+        std::string where = p.where;
+        if (where.rfind("/case", 0) == 0) where = "/cases/" + pointer_token(c->name) + where.substr(5);
+        add_once(problems, where, p.reason + " (series " + key.label() + ")");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Study parse_study_document(const json& doc, const std::filesystem::path& base_dir) {
+  ProblemList problems;
+  if (!doc.is_object()) throw InputError("", "a study must be a JSON object");
+  problems.append(validate_against_schema(doc, "study.schema"));
+
+  Study s;
+  s.definition = doc;
+  s.base_dir = base_dir;
+  if (auto n = doc.find("name"); n == doc.end() || !n->is_string() || n->get<std::string>().empty()) {
+    add_once(problems, "/name", "a non-empty study name is required");
+  } else {
+    s.name = n->get<std::string>();
+    const bool safe = std::all_of(s.name.begin(), s.name.end(), [](char ch) {
+      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_' || ch == '.';
+    });
+    if (!safe || s.name.front() == '.')
+      add_once(problems, "/name", "use letters, digits, '-', '_' and '.' only (it names the report folder)");
+  }
+  if (auto n = doc.find("numerics"); n != doc.end()) {
+    if (n->is_object())
+      s.numerics = *n;
+    else
+      add_once(problems, "/numerics", "must be an object");
+  }
+  parse_cases(doc, base_dir, s, problems);
+  parse_factors(doc, s, problems);
+  default_factors(s);
+  parse_design(doc, s, problems);
+  parse_grids(doc, s, problems);
+  parse_extrapolation(doc, s, problems);
+  if (problems.empty()) check_grids(s, problems);
+  if (problems.empty()) check_jobs(s, problems);
+  problems.throw_if_any();
+  return s;
+}
+
+Study parse_study(const std::filesystem::path& file) {
+  const json doc = read_json_file(file);
+  auto dir = std::filesystem::absolute(file).parent_path();
+  return parse_study_document(doc, dir);
+}
+
+}  // namespace gridfree

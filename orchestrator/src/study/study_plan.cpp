@@ -1,0 +1,131 @@
+// Memory and time estimates of a study's jobs (see study_plan.h for the model).
+#include "study/study_plan.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace gridfree {
+
+std::uint64_t physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return 0;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page);
+}
+
+static double cell_count(const std::array<int, 3>& c) {
+  return static_cast<double>(c[0]) * c[1] * c[2];
+}
+
+double estimated_memory_bytes(const std::array<int, 3>& cells) {
+  return kBytesPerCell * cell_count(cells) + kBaseBytes;
+}
+
+double estimated_iterations(const std::array<int, 3>& cells) {
+  return kBaseIterations + kIterationsPerCellRoot * std::cbrt(cell_count(cells));
+}
+
+double estimated_seconds(const std::array<int, 3>& cells, int threads) {
+  const double n = cell_count(cells);
+  return estimated_iterations(cells) * n * kSecondsPerCellIteration / std::max(1, threads);
+}
+
+Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores) {
+  (void)study;
+  Plan plan;
+  plan.workers = std::max(1, workers);
+  const int threads = std::max(1, cores / plan.workers);
+  plan.rows.resize(expanded.series.size());
+  for (std::size_t s = 0; s < expanded.series.size(); ++s) plan.rows[s].series = expanded.series[s].label();
+  for (const auto& job : expanded.jobs) {
+    auto& row = plan.rows[job.series];
+    const auto n = static_cast<std::uint64_t>(cell_count(job.cells));
+    row.grids += 1;
+    row.cells += n;
+    row.largest_cells = std::max(row.largest_cells, n);
+    row.memory_bytes = std::max(row.memory_bytes, estimated_memory_bytes(job.cells));
+    row.seconds += estimated_seconds(job.cells, threads);
+  }
+  plan.jobs = expanded.jobs.size();
+  for (const auto& row : plan.rows) {
+    plan.cells += row.cells;
+    plan.max_memory_bytes = std::max(plan.max_memory_bytes, row.memory_bytes);
+    plan.seconds += row.seconds;
+  }
+  plan.wall_seconds = plan.seconds / plan.workers;
+  return plan;
+}
+
+nlohmann::json plan_to_json(const Plan& plan) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : plan.rows)
+    rows.push_back({{"series", r.series},
+                    {"grids", r.grids},
+                    {"cells", r.cells},
+                    {"largest_cells", r.largest_cells},
+                    {"memory_bytes", r.memory_bytes},
+                    {"seconds", r.seconds}});
+  return {{"series", rows},
+          {"jobs", plan.jobs},
+          {"cells", plan.cells},
+          {"max_memory_bytes", plan.max_memory_bytes},
+          {"seconds", plan.seconds},
+          {"workers", plan.workers},
+          {"wall_seconds", plan.wall_seconds},
+          {"model",
+           {{"bytes_per_cell", kBytesPerCell},
+            {"seconds_per_cell_iteration", kSecondsPerCellIteration},
+            {"iterations", "200 + 10 N^(1/3)"}}}};
+}
+
+std::string human_bytes(double bytes) {
+  const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB"};
+  int u = 0;
+  while (bytes >= 1024 && u < 4) {
+    bytes /= 1024;
+    ++u;
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f %s", bytes, units[u]);
+  return buf;
+}
+
+std::string human_seconds(double s) {
+  char buf[32];
+  if (s < 120)
+    std::snprintf(buf, sizeof buf, "%.0f s", s);
+  else if (s < 7200)
+    std::snprintf(buf, sizeof buf, "%.1f min", s / 60);
+  else
+    std::snprintf(buf, sizeof buf, "%.1f h", s / 3600);
+  return buf;
+}
+
+std::string plan_to_table(const Plan& plan) {
+  std::string out;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-40s %5s %12s %12s %12s\n", "series", "grids", "cells",
+                "max memory", "est. time");
+  out += line;
+  for (const auto& r : plan.rows) {
+    std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s\n", r.series.c_str(), r.grids,
+                  static_cast<unsigned long long>(r.cells), human_bytes(r.memory_bytes).c_str(),
+                  human_seconds(r.seconds).c_str());
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s\n", "total (jobs)", plan.jobs,
+                static_cast<unsigned long long>(plan.cells),
+                human_bytes(plan.max_memory_bytes).c_str(), human_seconds(plan.seconds).c_str());
+  out += line;
+  std::snprintf(line, sizeof line, "estimated wall time with %d workers: %s (model: %.0f B/cell, %.1e s per cell-iteration)\n",
+                plan.workers, human_seconds(plan.wall_seconds).c_str(), kBytesPerCell,
+                kSecondsPerCellIteration);
+  out += line;
+  return out;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,142 @@
+// `gridfree-worker particles` as users run it: a generator spec or a file to
+// convert in, a CSV out, exit 0 with the per-region counts on stderr;
+// invalid input exits 2 naming the JSON path (or file:line:col) and writes
+// nothing.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct WorkerRun {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+// Runs gridfree-worker with `args`; stdout captured, stderr to a file.
+WorkerRun run_worker(const std::string& args, const fs::path& dir) {
+  const fs::path err_file = dir / "stderr.txt";
+  const std::string cmd = std::string(GRIDFREE_BIN_DIR) + "/gridfree-worker " + args + " 2>" + err_file.string();
+  WorkerRun r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), pipe) != nullptr) r.out += buf.data();
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_file);
+  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  return r;
+}
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t count_lines(const std::string& text) {
+  std::size_t n = 0;
+  for (char c : text) n += c == '\n';
+  return n;
+}
+
+class ParticlesCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("gridfree_particles_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+  WorkerRun particles(const fs::path& spec, const fs::path& out) {
+    return run_worker("particles " + spec.string() + " -o " + out.string(), dir_);
+  }
+  fs::path dir_;
+};
+
+TEST_F(ParticlesCli, GeneratesTheBurstingBubble) {
+  const auto spec = write("pc1.json", R"({"domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
+                                          "generator": {"kind": "bursting_bubble", "seed": 1}})");
+  const WorkerRun r = particles(spec, dir_ / "pc1.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = slurp(dir_ / "pc1.csv");
+  EXPECT_EQ(csv.rfind("x,y,z,d\n", 0), 0u);
+  EXPECT_EQ(count_lines(csv), 1u + 4649u);  // header + 4513 + 10 + 126
+  EXPECT_NE(r.err.find("4649 particles"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("dense"), std::string::npos) << r.err;
+  // Same spec, same bytes.
+  ASSERT_EQ(particles(spec, dir_ / "again.csv").exit_code, 0);
+  EXPECT_EQ(slurp(dir_ / "again.csv"), csv);
+}
+
+TEST_F(ParticlesCli, ThermalVelocitiesAddColumns) {
+  const auto spec = write("pc3t.json", R"({"domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
+                                           "generator": {"kind": "bursting_bubble", "seed": 3},
+                                           "particle_velocity": {"thermal_cm_s": 1.0, "seed": 3}})");
+  ASSERT_EQ(particles(spec, dir_ / "pc3t.csv").exit_code, 0);
+  EXPECT_EQ(slurp(dir_ / "pc3t.csv").rfind("x,y,z,d,u,v,w\n", 0), 0u);
+}
+
+TEST_F(ParticlesCli, ConvertsAnMfixFile) {
+  write("particle_input.dat", "0.15 0.25 0.35 0.05 2.5\n0.45 0.55 0.65 0.05 2.5\n");
+  const auto spec = write("convert.json", R"({"domain_dp": [10, 10, 10], "particle_diameter_cm": 0.1,
+                                              "file": "particle_input.dat", "format": "mfix"})");
+  const WorkerRun r = particles(spec, dir_ / "converted.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(dir_ / "converted.csv"), "x,y,z,d\n0.14999999999999999,0.25,0.34999999999999998,0.10000000000000001\n"
+                                           "0.45000000000000001,0.55000000000000004,0.65000000000000002,0.10000000000000001\n");
+}
+
+TEST_F(ParticlesCli, UnknownGeneratorKindExits2) {
+  const auto spec = write("bad.json", R"({"domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
+                                          "generator": {"kind": "bursting", "seed": 1}})");
+  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/generator/kind"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.csv"));
+}
+
+TEST_F(ParticlesCli, NegativeDomainExits2) {
+  const auto spec = write("bad.json", R"({"domain_dp": [-30, 200, 10], "particle_diameter_cm": 0.01,
+                                          "generator": {"kind": "bursting_bubble", "seed": 1}})");
+  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/domain_dp/0"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.csv"));
+}
+
+TEST_F(ParticlesCli, ErrorsLeaveAnExistingOutputUntouched) {
+  write("out.csv", "previous\n");
+  write("bed.csv", "x,y,z,d\n0.5,0.5,0.5,0.1\n0.5,0.55,0.5,0.1\n");  // overlapping pair
+  const auto spec = write("convert.json", R"({"domain_dp": [10, 10, 10], "particle_diameter_cm": 0.1,
+                                              "file": "bed.csv", "format": "csv"})");
+  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bed.csv:3"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(dir_ / "out.csv"), "previous\n");
+}
+
+TEST_F(ParticlesCli, MalformedJsonNamesLineAndColumn) {
+  const auto spec = write("broken.json", "{\"domain_dp\": [30, 200, 10],\n \"particle_diameter_cm\": ,\n}");
+  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("broken.json:2:"), std::string::npos) << r.err;
+}
+
+}  // namespace

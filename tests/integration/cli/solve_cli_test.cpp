@@ -1,0 +1,162 @@
+// gridfree-worker solve, run as a process (CONTRACT.md §2): exit codes,
+// the result document, --vtk, and the failure of centroid deposition on
+// cells smaller than a particle.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kWorker = fs::path(GRIDFREE_BIN_DIR) / "gridfree-worker";
+
+nlohmann::json baseline_job(const std::string& deposition, const std::array<int, 3>& cells) {
+  nlohmann::json job = nlohmann::json::parse(R"({
+    "schema": "gridfree/job/1",
+    "case": {
+      "name": "PC1",
+      "domain_dp": [30, 200, 10],
+      "particle_diameter_cm": 0.01,
+      "gas": {"density_g_cm3": 1e-3, "viscosity_g_cm_s": 2e-4},
+      "gravity_cm_s2": [0, 0, 0],
+      "boundaries": {
+        "x": "periodic", "z": "periodic",
+        "y_low":  {"type": "mass_inflow", "superficial_velocity_cm_s": 20.0},
+        "y_high": {"type": "pressure_outflow", "pressure_dyn_cm2": 0.0}
+      },
+      "particles": {"generator": {"kind": "bursting_bubble", "seed": 1}},
+      "probes": {"pressure_drop": {"y1_dp": 4, "y2_dp": 104}}
+    },
+    "numerics": {
+      "convection": "superbee",
+      "drag": "bvk",
+      "tolerances": {"linear": 1e-8, "filter": 1e-10, "steady": 1e-5},
+      "max_iterations": 2000
+    }
+  })");
+  job["numerics"]["grid"] = {{"cells", cells}};
+  job["numerics"]["deposition"] = {{"kind", deposition}, {"fwhm_dp", 6}};
+  return job;
+}
+
+struct Outcome {
+  int exit_code = -1;
+  std::string output;  // stdout + stderr
+};
+
+Outcome run_worker(const std::string& args) {
+  Outcome r;
+  const std::string cmd = kWorker.string() + " solve " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, pipe)) r.output += buf;
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("gridfree_solve_cli_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& p, const nlohmann::json& j) { std::ofstream(p) << j.dump(2); }
+
+nlohmann::json read(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+TEST(SolveCli, BaselineAtDeltaStar2ConvergesAndWritesEveryField) {
+  const fs::path dir = scratch("baseline");
+  write(dir / "job.json", baseline_job("diffusion", {15, 100, 5}));
+  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " --vtk " +
+                    (dir / "vtk").string() + " --threads 2 -q");
+  const std::string cmd_note = "output:\n" + r.output;
+  ASSERT_EQ(r.exit_code, 0) << cmd_note;
+  const nlohmann::json res = read(dir / "result.json");
+  EXPECT_EQ(res["schema"], "gridfree/result/1");
+  EXPECT_EQ(res["status"], "converged");
+  ASSERT_TRUE(res["srq"]["dp_star"].is_number());
+  // Physically sensible: the series-resistance estimate of the bed is ≈ 1174
+  // (tests/verification/flow/bursting_bubble_test.cpp); the bubble bypass
+  // lowers it. A broad band catches gross errors (units, signs, drag law).
+  EXPECT_GT(res["srq"]["dp_star"].get<double>(), 800.0);
+  EXPECT_LT(res["srq"]["dp_star"].get<double>(), 1400.0);
+  EXPECT_EQ(res["grid"]["cells"], nlohmann::json({15, 100, 5}));
+  EXPECT_NEAR(res["grid"]["delta_star"].get<double>(), 2.0, 1e-12);
+  for (const char* key : {"job_hash", "iterations", "version"}) EXPECT_TRUE(res.contains(key)) << key;
+  EXPECT_EQ(res["job_hash"].get<std::string>().size(), 64u);
+  EXPECT_LT(res["residuals"]["continuity"].get<double>(), 1e-5);
+  EXPECT_LT(res["residuals"]["momentum"].get<double>(), 1e-5);
+  EXPECT_GT(res["timing"]["wall_s"].get<double>(), 0.0);
+  EXPECT_GE(res["timing"]["cpu_s"].get<double>(), 0.0);
+  EXPECT_GT(res["memory"]["peak_rss_mb"].get<double>(), 0.0);
+  EXPECT_EQ(res["diagnostics"]["particles"], 4649);
+  EXPECT_GT(res["diagnostics"]["max_solids_fraction"].get<double>(), 0.2);
+  EXPECT_LT(res["diagnostics"]["mass_imbalance"].get<double>(), 1e-6);
+  EXPECT_TRUE(fs::exists(dir / "vtk" / "PC1.vtk"));
+  std::ifstream vtk(dir / "vtk" / "PC1.vtk");
+  std::string first;
+  std::getline(vtk, first);
+  EXPECT_EQ(first.rfind("# vtk DataFile", 0), 0u);
+  fs::remove_all(dir);
+}
+
+TEST(SolveCli, ResultGoesToStdoutWithoutOutputFile) {
+  const fs::path dir = scratch("stdout");
+  nlohmann::json job = baseline_job("diffusion", {3, 20, 1});
+  job["case"]["particles"] = {{"uniform", {{"solids_fraction", 0.3}}}};
+  write(dir / "job.json", job);
+  const Outcome r = run_worker((dir / "job.json").string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json res = nlohmann::json::parse(r.output);
+  EXPECT_EQ(res["status"], "converged");
+  fs::remove_all(dir);
+}
+
+TEST(SolveCli, CentroidDepositionFailsBelowDeltaStarOne) {
+  const fs::path dir = scratch("centroid");
+  write(dir / "job.json", baseline_job("centroid", {60, 400, 20}));  // Δ* = 0.5
+  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q");
+  ASSERT_EQ(r.exit_code, 3) << r.output;
+  const nlohmann::json res = read(dir / "result.json");
+  EXPECT_EQ(res["status"], "failed");
+  const std::string reason = res["reason"];
+  EXPECT_NE(reason.find("solids fraction"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("diffusion deposition"), std::string::npos) << reason;
+  EXPECT_TRUE(!res.contains("srq") || !res["srq"].contains("dp_star") || res["srq"]["dp_star"].is_null());
+  fs::remove_all(dir);
+}
+
+TEST(SolveCli, JobWithoutGridIsInvalidInputAndWritesNothing) {
+  const fs::path dir = scratch("nogrid");
+  nlohmann::json job = baseline_job("diffusion", {15, 100, 5});
+  job["numerics"].erase("grid");
+  write(dir / "job.json", job);
+  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("grid"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "result.json"));
+  fs::remove_all(dir);
+}
+
+TEST(SolveCli, MissingJobFileIsInvalidInput) {
+  const Outcome r = run_worker("/nonexistent/job.json -q");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+}  // namespace

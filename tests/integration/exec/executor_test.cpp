@@ -1,0 +1,177 @@
+// Executors against tests/fixtures/fake_worker.sh: LocalExecutor's exit
+// codes, signals, timeouts (the whole process group dies), launch failures
+// and kill_all; SlurmExecutor with fake sbatch/squeue/sacct on PATH.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "exec/local_executor.h"
+#include "exec/slurm_executor.h"
+
+namespace gridfree {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kFake = fs::path(GRIDFREE_SOURCE_DIR) / "tests/fixtures/fake_worker.sh";
+
+fs::path temp_dir(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / ("gridfree_exec_test_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+JobLaunch launch(const fs::path& root, long long id, const std::string& mode, double timeout = 0) {
+  const nlohmann::json doc = {{"case", {{"name", mode}, {"domain_dp", {30, 200, 10}}}},
+                              {"numerics", {{"grid", {{"cells", {10, 60, 3}}}}}}};
+  JobLaunch j;
+  j.job_id = id;
+  j.job_hash = "hash" + std::to_string(id);
+  j.run_dir = prepare_run_dir(root, j.job_hash, doc.dump(2));
+  j.timeout_s = timeout;
+  return j;
+}
+
+JobExit wait_for(Executor& ex, double limit_s = 20) {
+  auto e = ex.wait_any(limit_s);
+  if (!e) throw std::runtime_error("no job finished in time");
+  return *e;
+}
+
+TEST(LocalExecutor, ConvergedJobExitsZeroAndWritesItsResultAndLog) {
+  const auto root = temp_dir("ok");
+  LocalExecutor ex(kFake);
+  ex.start(launch(root, 1, "ok"));
+  EXPECT_EQ(ex.in_flight(), 1u);
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.job_id, 1);
+  EXPECT_EQ(e.how, JobExit::How::kExited);
+  EXPECT_EQ(e.code, 0);
+  EXPECT_TRUE(fs::exists(e.run_dir / "result.json"));
+  EXPECT_NE(tail_of_file(e.run_dir / "worker.log").find("mode ok"), std::string::npos);
+  EXPECT_EQ(ex.in_flight(), 0u);
+}
+
+TEST(LocalExecutor, ExitCodesAndSignalsAreReported) {
+  const auto root = temp_dir("codes");
+  LocalExecutor ex(kFake);
+  ex.start(launch(root, 1, "noconv"));
+  ex.start(launch(root, 2, "crash"));
+  ex.start(launch(root, 3, "invalid"));
+  std::map<long long, JobExit> exits;
+  for (int i = 0; i < 3; ++i) {
+    auto e = wait_for(ex);
+    exits[e.job_id] = e;
+  }
+  EXPECT_EQ(exits[1].code, 3);
+  EXPECT_EQ(exits[2].how, JobExit::How::kSignaled);
+  EXPECT_EQ(exits[2].signal, SIGSEGV);
+  EXPECT_NE(describe(exits[2]).find("SEGV"), std::string::npos);
+  EXPECT_EQ(exits[3].code, 2);
+}
+
+TEST(LocalExecutor, TimeoutKillsTheWholeProcessGroup) {
+  const auto root = temp_dir("timeout");
+  LocalExecutor ex(kFake);
+  ex.start(launch(root, 7, "hang", 0.5));
+  const std::string id = ex.external_id(7);
+  ASSERT_EQ(id.rfind("local:", 0), 0u);
+  const pid_t pgid = static_cast<pid_t>(std::stol(id.substr(id.find(':', 6) + 1)));
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  // The fake's `sleep 600` child was in the group: once init has reaped it
+  // (it is killed already; reaping is asynchronous) the group is empty.
+  bool gone = false;
+  for (int i = 0; i < 200 && !gone; ++i) {
+    gone = killpg(pgid, 0) == -1;
+    if (!gone) usleep(25000);
+  }
+  EXPECT_TRUE(gone);
+}
+
+TEST(LocalExecutor, MissingWorkerIsALaunchFailure) {
+  const auto root = temp_dir("missing");
+  LocalExecutor ex(root / "no-such-worker");
+  ex.start(launch(root, 1, "ok"));
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.how, JobExit::How::kLaunchFailed);
+}
+
+TEST(LocalExecutor, KillAllStopsEverythingInFlight) {
+  const auto root = temp_dir("killall");
+  LocalExecutor ex(kFake);
+  ex.start(launch(root, 1, "hang"));
+  ex.start(launch(root, 2, "hang"));
+  const auto ids = ex.kill_all();
+  EXPECT_EQ(ids.size(), 2u);
+  EXPECT_EQ(ex.in_flight(), 0u);
+  EXPECT_FALSE(ex.wait_any(0.05).has_value());
+}
+
+TEST(ProcessIdentity, OnlyTheExactProcessIsKilled) {
+  // A made-up start time never matches a live process: nothing is killed.
+  const std::string me = process_identity(getpid());
+  const std::string fake = me.substr(0, me.rfind(':')) + ":1";
+  EXPECT_FALSE(kill_process_group_if_alive(fake));
+}
+
+// Fake Slurm: sbatch runs the script at once and prints an id; squeue shows
+// nothing (the job has left the queue); sacct answers from a file.
+fs::path fake_slurm(const fs::path& dir) {
+  const auto bin = dir / "bin";
+  fs::create_directories(bin);
+  auto script = [&](const std::string& name, const std::string& body) {
+    std::ofstream(bin / name) << "#!/bin/sh\n" << body;
+    fs::permissions(bin / name, fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
+  };
+  script("sbatch", "[ \"$1\" = --parsable ] || exit 9\n"
+                   "n=$(cat \"" + (dir / "next_id").string() + "\" 2>/dev/null || echo 100)\n"
+                   "echo $((n + 1)) > \"" + (dir / "next_id").string() + "\"\n"
+                   "case \"$(cat \"" + (dir / "mode").string() + "\")\" in run) sh \"$2\" >/dev/null 2>&1 ;; esac\n"
+                   "echo \"$n;cluster\"\n");
+  script("squeue", "exit 0\n");
+  script("sacct", "cat \"" + (dir / "sacct").string() + "\"\n");
+  script("scancel", "echo \"$@\" >> \"" + (dir / "scancelled").string() + "\"\n");
+  return bin;
+}
+
+TEST(SlurmExecutor, SubmitsABatchScriptAndReadsTheExitCode) {
+  const auto dir = temp_dir("slurm");
+  const auto bin = fake_slurm(dir);
+  const std::string old_path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
+  std::ofstream(dir / "mode") << "run";
+  SlurmExecutor ex(kFake, dir / "runs", 0.05);
+  auto job = launch(dir / "runs", 1, "noconv");
+  ex.start(job);
+  EXPECT_EQ(ex.external_id(1), "slurm:100");
+  const auto script = tail_of_file(job.run_dir / "job.sbatch", 20);
+  EXPECT_NE(script.find("solve"), std::string::npos);
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.how, JobExit::How::kExited);
+  EXPECT_EQ(e.code, 3);
+  EXPECT_TRUE(fs::exists(job.run_dir / "result.json"));
+
+  // A job that never wrote its exit code: sacct decides.
+  std::ofstream(dir / "mode") << "hold";
+  std::ofstream(dir / "sacct") << "CANCELLED|0:9\n";
+  ex.start(launch(dir / "runs", 2, "ok"));
+  const auto lost = wait_for(ex);
+  EXPECT_EQ(lost.how, JobExit::How::kSignaled);
+  EXPECT_EQ(lost.signal, 9);
+  std::ofstream(dir / "sacct") << "TIMEOUT|0:0\n";
+  ex.start(launch(dir / "runs", 3, "ok"));
+  EXPECT_EQ(wait_for(ex).how, JobExit::How::kTimedOut);
+  setenv("PATH", old_path.c_str(), 1);
+}
+
+}  // namespace
+}  // namespace gridfree

@@ -1,0 +1,136 @@
+// Integration of the report with the real extrapolation library, and a
+// rendering check of report.html in headless Chromium (skipped when no
+// Chromium is installed: `make test` installs it).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "report/report.h"
+
+namespace gridfree {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int count_of(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+// Two series of exact first-order data f = f0 + c·h on six grids (the power
+// law f0 + c h^p with p = 1 and the mixed fit both reproduce it exactly),
+// differing only in the drag law; the second also has a failed grid.
+StudyReportData first_order_study() {
+  StudyReportData d;
+  d.study_name = "render-check";
+  d.status = "done";
+  d.version = "gridfree test";
+  const double f0[2] = {1158.8, 850.0}, c[2] = {0.6, 1.5};
+  const char* drag[2] = {"bvk", "hkl"};
+  for (int s = 0; s < 2; ++s) {
+    SeriesData series{s + 1, "PC1", "superbee", drag[s], "diffusion", 6, "done", {}};
+    for (double h : {3.0, 2.5, 2.0, 1.5, 1.0, 0.75}) {
+      GridPoint g;
+      g.delta_star = h;
+      g.nx = g.ny = g.nz = static_cast<int>(std::lround(10 / h));
+      g.status = "converged";
+      g.dp_star = f0[s] + c[s] * h;
+      g.cpu_s = 1000 / (h * h * h);
+      g.wall_s = g.cpu_s / 2;
+      series.grids.push_back(g);
+    }
+    if (s == 1) {
+      GridPoint bad;
+      bad.delta_star = 0.5;
+      bad.status = "failed";
+      bad.reason = "worker crashed";
+      series.grids.push_back(bad);
+    }
+    d.series.push_back(series);
+  }
+  return d;
+}
+
+class ReportRender : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(::testing::TempDir()) / ("gridfree-render-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    files_ = write_study_report(first_order_study(), dir_);  // the extrapolation library
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+  ReportFiles files_;
+};
+
+TEST_F(ReportRender, LibraryExtrapolationRecoversF0) {
+  const std::string csv = read(dir_ / "series.csv");
+  // The f0 column of each data row. Exact first-order data: the fits
+  // reproduce f0 up to the least-squares round-off and the p search
+  // resolution of the library; 1e-6 relative is far below any plotted scale.
+  std::istringstream lines(csv);
+  std::string header, line;
+  std::getline(lines, header);
+  std::vector<std::string> names;
+  for (std::istringstream h(header); std::getline(h, line, ',');) names.push_back(line);
+  const auto f0_col = std::find(names.begin(), names.end(), "f0") - names.begin();
+  const double expected[2] = {1158.8, 850.0};
+  for (int s = 0; s < 2; ++s) {
+    ASSERT_TRUE(std::getline(lines, line));
+    std::vector<std::string> cells;
+    for (std::istringstream r(line); std::getline(r, header, ',');) cells.push_back(header);
+    ASSERT_GT(cells.size(), static_cast<std::size_t>(f0_col));
+    EXPECT_NEAR(std::stod(cells[f0_col]), expected[s], 1e-6 * expected[s]) << line;
+  }
+  // One-factor difference (drag): 2|1158.8 − 850|/(1158.8 + 850).
+  const std::string diff = read(dir_ / "differences.csv");
+  const double d = 2 * (1158.8 - 850.0) / (1158.8 + 850.0);
+  const auto last_comma = diff.rfind(',', diff.size() - 2);
+  EXPECT_NEAR(std::stod(diff.substr(last_comma + 1)), d, 1e-6);
+  EXPECT_NE(read(dir_ / "failures.csv").find("worker crashed"), std::string::npos);
+}
+
+std::string find_chromium() {
+  for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
+    const std::string cmd = std::string("command -v ") + name + " >/dev/null 2>&1";
+    if (std::system(cmd.c_str()) == 0) return name;
+  }
+  return {};
+}
+
+TEST_F(ReportRender, ChromiumRendersTheSvgCharts) {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (apt-get install chromium)";
+  const fs::path profile = dir_ / "chromium-profile";
+  const fs::path dom = dir_ / "dom.html";
+  const std::string cmd = "timeout 120 " + chromium +
+                          " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+                          " --disable-background-networking --disable-component-update --disable-sync"
+                          " --user-data-dir='" + profile.string() + "' --dump-dom 'file://" +
+                          fs::absolute(files_.html).string() + "' > '" + dom.string() + "' 2>/dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const std::string text = read(dom);
+  // The parsed DOM holds every inline chart as an svg element, with its
+  // drawn content, and the page title.
+  EXPECT_EQ(count_of(text, "<svg"), static_cast<int>(files_.svg.size()));
+  EXPECT_GE(count_of(text, "<circle"), 12);  // 6 + 6 converged grids in the Fig. 1 charts
+  EXPECT_NE(text.find("<title>Grid-convergence report: render-check</title>"), std::string::npos);
+  EXPECT_NE(text.find("Speed vs accuracy"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gridfree

@@ -1,0 +1,67 @@
+// Canonical JSON and the job hash: key order and integer/float spelling do
+// not matter; any change of a value does.
+#include <gtest/gtest.h>
+
+#include "core/version.h"
+#include "job/job_hash.h"
+
+namespace gridfree {
+namespace {
+
+using nlohmann::json;
+
+json example_job() {
+  return json::parse(R"({"schema": "gridfree/job/1",
+    "case": {"domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01, "name": "PC1",
+             "particles": {"generator": {"kind": "bursting_bubble", "seed": 1}}},
+    "numerics": {"grid": {"cells": [30, 200, 10]}, "convection": "superbee", "drag": "bvk",
+                 "deposition": {"kind": "diffusion", "fwhm_dp": 6}}})");
+}
+
+TEST(CanonicalJson, SortsKeysAndDropsWhitespace) {
+  const json a = json::parse(R"({"b": 1, "a": {"d": [1, 2], "c": "x"}})");
+  EXPECT_EQ(canonical_json(a), R"({"a":{"c":"x","d":[1,2]},"b":1})");
+}
+
+TEST(CanonicalJson, NumbersAsShortestDoubles) {
+  EXPECT_EQ(canonical_json(json::parse("[20, 20.0, 2e1, 0.1, 1e-8, -0.0, 0]")), "[20,20,20,0.1,1e-08,0,0]");
+  EXPECT_EQ(canonical_json(json::parse(R"({"s": "a\"b", "t": true, "n": null})")), R"({"n":null,"s":"a\"b","t":true})");
+}
+
+TEST(JobHashDefinition, IntegerAndFloatSpellingsHashAlike) {
+  json a = example_job();
+  json b = example_job();
+  b["numerics"]["deposition"]["fwhm_dp"] = 6.0;
+  b["case"]["domain_dp"] = json::parse("[30.0, 200.0, 1e1]");
+  EXPECT_EQ(job_hash(a), job_hash(b));
+  // Key order in the source text does not matter either.
+  const json c = json::parse(R"({"numerics": {"drag": "bvk", "convection": "superbee",
+      "deposition": {"fwhm_dp": 6, "kind": "diffusion"}, "grid": {"cells": [30, 200, 10]}},
+    "case": {"name": "PC1", "particle_diameter_cm": 0.01, "domain_dp": [30, 200, 10],
+             "particles": {"generator": {"seed": 1, "kind": "bursting_bubble"}}},
+    "schema": "gridfree/job/1"})");
+  EXPECT_EQ(job_hash(a), job_hash(c));
+}
+
+TEST(JobHashDefinition, AnyValueChangeChangesTheHash) {
+  const std::string base = job_hash(example_job());
+  EXPECT_EQ(base.size(), 64u);
+  const auto changed = [&](auto edit) {
+    json j = example_job();
+    edit(j);
+    return job_hash(j);
+  };
+  EXPECT_NE(base, changed([](json& j) { j["case"]["particles"]["generator"]["seed"] = 2; }));
+  EXPECT_NE(base, changed([](json& j) { j["numerics"]["grid"]["cells"][1] = 201; }));
+  EXPECT_NE(base, changed([](json& j) { j["numerics"]["convection"] = "fou"; }));
+  EXPECT_NE(base, changed([](json& j) { j["case"]["particle_diameter_cm"] = 0.0100000001; }));
+  EXPECT_NE(base, changed([](json& j) { j["numerics"]["tolerances"] = {{"steady", 1e-6}}; }));
+}
+
+TEST(JobHashDefinition, IsShaOfCanonicalTextAndSolverVersion) {
+  const json j = example_job();
+  EXPECT_EQ(job_hash(j), sha256_hex(canonical_json(j) + "\n" + kSolverVersion));
+}
+
+}  // namespace
+}  // namespace gridfree

@@ -1,0 +1,101 @@
+// The result document: what to_json writes validates against
+// schemas/result.schema.json and reads back field for field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/schema_validation.h"
+#include "job/result.h"
+
+namespace gridfree {
+namespace {
+
+JobResult example() {
+  JobResult r;
+  r.job_hash = std::string(64, 'a');
+  r.status = SolveStatus::kConverged;
+  r.dp_star = 1158.8;
+  r.cells = {30, 200, 10};
+  r.delta_star = 1.0;
+  r.iterations = 412;
+  r.residual_continuity = 8e-6;
+  r.residual_momentum = 3e-6;
+  r.dp_star_change = 1e-7;
+  r.wall_s = 3.2;
+  r.cpu_s = 6.1;
+  r.peak_rss_mb = 85;
+  r.particles = 4649;
+  r.max_solids_fraction = 0.41;
+  r.mass_imbalance = 1e-9;
+  r.extra = {{"filter", {{"iterations", 12}}}};
+  r.version = "gridfree 0.1.0 (abc)";
+  return r;
+}
+
+TEST(Result, RoundTrip) {
+  const JobResult r = example();
+  const nlohmann::json j = to_json(r);
+  EXPECT_TRUE(validate_against_schema(j, "result.schema").empty()) << format_problems(validate_against_schema(j, "result.schema"));
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_EQ(j["srq"]["dp_star"], 1158.8);
+  EXPECT_EQ(j["diagnostics"]["particles"], 4649);
+  const JobResult back = result_from_json(j);
+  EXPECT_EQ(back.job_hash, r.job_hash);
+  EXPECT_EQ(back.status, r.status);
+  EXPECT_EQ(back.dp_star, r.dp_star);
+  EXPECT_EQ(back.cells, r.cells);
+  EXPECT_EQ(back.iterations, r.iterations);
+  EXPECT_EQ(back.residual_continuity, r.residual_continuity);
+  EXPECT_EQ(back.residual_momentum, r.residual_momentum);
+  EXPECT_EQ(back.dp_star_change, r.dp_star_change);
+  EXPECT_EQ(back.wall_s, r.wall_s);
+  EXPECT_EQ(back.cpu_s, r.cpu_s);
+  EXPECT_EQ(back.peak_rss_mb, r.peak_rss_mb);
+  EXPECT_EQ(back.particles, r.particles);
+  EXPECT_EQ(back.max_solids_fraction, r.max_solids_fraction);
+  EXPECT_EQ(back.mass_imbalance, r.mass_imbalance);
+  EXPECT_EQ(back.extra, r.extra);
+  EXPECT_EQ(back.version, r.version);
+}
+
+TEST(Result, DivergedRunWritesNullsForNonFiniteNumbers) {
+  JobResult r = example();
+  r.status = SolveStatus::kDiverged;
+  r.reason = "residual grew above 1e10";
+  r.dp_star.reset();
+  r.residual_momentum = std::numeric_limits<double>::infinity();
+  r.residual_continuity = std::numeric_limits<double>::quiet_NaN();
+  const nlohmann::json j = to_json(r);
+  EXPECT_TRUE(validate_against_schema(j, "result.schema").empty());
+  EXPECT_TRUE(j["srq"]["dp_star"].is_null());
+  EXPECT_TRUE(j["residuals"]["momentum"].is_null());
+  EXPECT_EQ(j["reason"], "residual grew above 1e10");
+  const JobResult back = result_from_json(nlohmann::json::parse(j.dump()));
+  EXPECT_FALSE(back.dp_star.has_value());
+  EXPECT_TRUE(std::isnan(back.residual_momentum));
+  EXPECT_EQ(back.status, SolveStatus::kDiverged);
+}
+
+TEST(Result, StatusNames) {
+  for (SolveStatus s : {SolveStatus::kConverged, SolveStatus::kNotConverged, SolveStatus::kDiverged,
+                        SolveStatus::kInvalid, SolveStatus::kFailed})
+    EXPECT_EQ(solve_status_from_name(solve_status_name(s)), s);
+  EXPECT_EQ(solve_status_name(SolveStatus::kNotConverged), "not_converged");
+  EXPECT_FALSE(solve_status_from_name("done").has_value());
+}
+
+TEST(Result, MalformedDocumentIsAnInputError) {
+  nlohmann::json j = to_json(example());
+  j["status"] = "finished";
+  try {
+    result_from_json(j);
+    FAIL() << "accepted a bad status";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.problems().size(), 1u);
+    EXPECT_EQ(e.problems()[0].where, "/status");
+  }
+}
+
+}  // namespace
+}  // namespace gridfree

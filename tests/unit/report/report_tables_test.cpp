@@ -1,0 +1,142 @@
+// Tests of the series digest, one-factor differences and table renderings,
+// on the synthetic study of report_test_data.h (expected values computed
+// here from the manufactured data, not read back from the report code).
+#include <gtest/gtest.h>
+
+#include "report/differences.h"
+#include "report/report_tables.h"
+#include "report/series_summary.h"
+#include "report_test_data.h"
+
+namespace gridfree {
+namespace {
+
+std::vector<SeriesSummary> summaries() {
+  return summarize_series(test::synthetic_study(), test::fake_extrapolation);
+}
+
+TEST(ReportSeries, LabelNamesTheFactors) {
+  SeriesData s{0, "PC1", "superbee", "bvk", "diffusion", 6, "done", {}};
+  EXPECT_EQ(s.label(), "PC1 superbee fwhm6 bvk");
+  s.fwhm_dp = 4.5;
+  EXPECT_EQ(s.label(), "PC1 superbee fwhm4.5 bvk");
+  s.deposition = "centroid";
+  EXPECT_EQ(s.label(), "PC1 superbee centroid bvk");
+}
+
+TEST(ReportSeries, SummaryCountsAndSortsGrids) {
+  const auto s = summaries();
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].h, (std::vector<double>{0.5, 1.0, 1.5, 2.0}));
+  EXPECT_EQ(s[0].f[0], 1004.0);  // 1000 + 8·0.5
+  EXPECT_FALSE(s[0].insufficient());
+  EXPECT_FALSE(s[0].incomplete);
+  EXPECT_EQ(s[1].converged(), 4);
+  EXPECT_EQ(s[1].failed, 1);
+  EXPECT_EQ(s[1].series.grids.front().status, "diverged");  // Δ* 0.25 sorts first
+  EXPECT_EQ(s[2].converged(), 3);
+  EXPECT_EQ(s[2].pending, 1);
+  EXPECT_TRUE(s[2].insufficient());
+  EXPECT_TRUE(s[2].incomplete);
+  EXPECT_NE(s[2].note().find("insufficient grids (3 converged, 4 needed)"), std::string::npos);
+  EXPECT_NE(s[2].note().find("incomplete (1 of 4 grids pending)"), std::string::npos);
+  EXPECT_FALSE(s[2].f0().has_value());
+  // |f − f0|/f0 of A's coarsest grid: 16/1000.
+  EXPECT_DOUBLE_EQ(*s[0].relative_error(1016.0), 0.016);
+}
+
+TEST(ReportSeries, ExtrapolatorFailureIsRecordedNotThrown) {
+  const auto s = summarize_series(test::synthetic_study(),
+                                  [](const std::vector<double>&, const std::vector<double>&) -> nlohmann::json {
+                                    throw std::runtime_error("boom");
+                                  });
+  EXPECT_FALSE(s[0].extrapolation.has_value());
+  EXPECT_EQ(s[0].extrapolation_error, "boom");
+  EXPECT_NE(s[0].note().find("extrapolation: boom"), std::string::npos);
+}
+
+TEST(ReportDifferences, RelativeDifferenceFormula) {
+  // 2|1000 − 1500|/(1000 + 1500) = 0.4.
+  EXPECT_DOUBLE_EQ(*relative_difference(1000, 1500), 0.4);
+  EXPECT_DOUBLE_EQ(*relative_difference(1500, 1000), 0.4);
+  EXPECT_DOUBLE_EQ(*relative_difference(-10, -12), 2.0 * 2 / 22);
+  EXPECT_FALSE(relative_difference(1, -1).has_value());
+  EXPECT_FALSE(relative_difference(NAN, 1).has_value());
+}
+
+TEST(ReportDifferences, OnlyPairsDifferingInExactlyOneFactor) {
+  const auto s = summaries();
+  const auto d = one_factor_differences(s);
+  ASSERT_EQ(d.size(), 2u);  // A–B (drag), A–C (case); B–C differ in two
+  EXPECT_EQ(d[0].factor, "drag");
+  EXPECT_EQ(d[0].value_a, "bvk");
+  EXPECT_EQ(d[0].value_b, "hkl");
+  EXPECT_DOUBLE_EQ(*d[0].relative, 2.0 * 500 / 2500);
+  EXPECT_EQ(d[1].factor, "case");
+  EXPECT_FALSE(d[1].relative.has_value());  // C has no f0 (3 grids)
+}
+
+TEST(ReportDifferences, FilterWidthAndDepositionAreFactors) {
+  std::vector<SeriesSummary> s(3);
+  s[0].series = {0, "PC1", "superbee", "bvk", "diffusion", 4, "done", {}};
+  s[1].series = {0, "PC1", "superbee", "bvk", "diffusion", 8, "done", {}};
+  s[2].series = {0, "PC1", "superbee", "bvk", "centroid", 4, "done", {}};
+  const auto d = one_factor_differences(s);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].factor, "fwhm_dp");
+  EXPECT_EQ(d[0].value_b, "8");
+  EXPECT_EQ(d[1].factor, "deposition");
+}
+
+TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
+  const Table t = series_table(summaries());
+  ASSERT_EQ(t.rows.size(), 3u);
+  auto col = [&](const std::string& name) {
+    for (std::size_t i = 0; i < t.columns.size(); ++i) {
+      if (t.columns[i].name == name) return i;
+    }
+    ADD_FAILURE() << "no column " << name;
+    return std::size_t{0};
+  };
+  EXPECT_EQ(t.rows[0][col("f0")].exact, "1000");
+  EXPECT_EQ(t.rows[0][col("method")].exact, "power");
+  // A: R_f = (1016 − 1004)/3 = 4, σ_RE/R_f = 0.5/4 = 0.125 → good fit.
+  EXPECT_DOUBLE_EQ(std::stod(t.rows[0][col("data_range")].exact), 4.0);
+  EXPECT_DOUBLE_EQ(std::stod(t.rows[0][col("sigma_re_over_rf")].exact), 0.125);
+  EXPECT_EQ(t.rows[0][col("good_fit")].exact, "yes");
+  EXPECT_EQ(t.rows[1][col("failed")].exact, "1");
+  EXPECT_EQ(t.rows[2][col("f0")].exact, "");
+  EXPECT_NE(t.rows[2][col("note")].exact.find("insufficient grids"), std::string::npos);
+  EXPECT_EQ(t.rows[2][col("status")].exact, "running");
+}
+
+TEST(ReportTables, CsvQuotesAndMarkdownEscapes) {
+  Table t;
+  t.columns = {{"a", "A", false, false}, {"b", "B", true, true}, {"c", "C|x", false, true}};
+  t.rows.push_back({text_cell("x, \"y\""), number_cell(0.1), number_cell(1158.812345678, 5)});
+  EXPECT_EQ(to_csv(t), "a,b,c\n\"x, \"\"y\"\"\",0.1,1158.812345678\n");
+  EXPECT_EQ(to_markdown(t), "| A | C\\|x |\n| --- | ---: |\n| x, \"y\" | 1158.8 |\n");
+  const std::string html = to_html(t);
+  EXPECT_NE(html.find("<td>x, &quot;y&quot;</td><td class=\"num\">1158.8</td>"), std::string::npos);
+  EXPECT_EQ(html.find("0.1"), std::string::npos);  // csv-only column left out
+}
+
+TEST(ReportTables, FailuresListEveryUnusableGridWithItsReason) {
+  const Table t = failures_table(summaries());
+  ASSERT_EQ(t.rows.size(), 1u);  // the diverged grid; the queued one is pending, not failed
+  EXPECT_EQ(t.rows[0][0].exact, "PC1 superbee fwhm6 hkl");
+  EXPECT_EQ(t.rows[0][3].exact, "diverged");
+  EXPECT_EQ(t.rows[0][5].exact, "residual grew by 1e6, diverged at iteration 12");
+}
+
+TEST(ReportTables, GciTableComparesWithF0) {
+  const Table t = gci_table(summaries());
+  // A and B: 4 grids → 2 triplets each; C: 3 grids → 1 triplet.
+  ASSERT_EQ(t.rows.size(), 5u);
+  // A's second triplet: φ_ext = 1000 + 100 → (φ_ext − f0)/f0 = 0.1.
+  EXPECT_DOUBLE_EQ(std::stod(t.rows[1][10].exact), 0.1);
+  EXPECT_EQ(t.rows[4][10].exact, "");  // C has no f0
+}
+
+}  // namespace
+}  // namespace gridfree

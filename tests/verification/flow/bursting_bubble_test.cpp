@@ -1,0 +1,123 @@
+// The bursting-bubble baseline (PHYSICS.md §6: PC1, superbee, bvk, fwhm 6)
+// on the coarse grid Δ* = 2 (15 × 100 × 5 cells).
+//
+// Reference estimate, computed here independently of the solver: a 1-D
+// series-resistance model. The particles are binned into slabs of 1 dp in y;
+// each slab's mean solids fraction φ gives dp/dy = β(φ) u/ε_g with
+// u = U0/ε_g and β = φ D_bvk(ε_g, u). Integrating from y1 to y2 ignores the
+// bypass through the bubble and the filter's smearing, so the solver must
+// agree only roughly: within 20 %. (The paper's value on fine grids, with
+// its own particle configuration, is ≈ 1159.)
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+
+#include "drag/drag_law.h"
+#include "flow/solve.h"
+#include "particles/particle_io.h"
+
+namespace gridfree {
+namespace {
+
+JobSpec baseline(double delta_star) {
+  JobSpec job;
+  CaseSpec& c = job.case_spec;
+  c.name = "PC1";
+  c.domain_dp = {30, 200, 10};
+  c.particle_diameter_cm = 0.01;
+  c.gas = {1e-3, 2e-4};
+  c.boundaries[0] = {BoundarySpec{BoundaryKind::kPeriodic}, BoundarySpec{BoundaryKind::kPeriodic}};
+  c.boundaries[2] = c.boundaries[0];
+  c.boundaries[1][0] = {BoundaryKind::kMassInflow, 20, 0};
+  c.boundaries[1][1] = {BoundaryKind::kPressureOutflow, 0, 0};
+  GeneratorSpec gen;
+  gen.kind = "bursting_bubble";
+  gen.params = {{"kind", "bursting_bubble"}, {"seed", 1}};
+  c.particles = gen;
+  c.probes = {4, 104};
+  job.numerics.cells = cells_for_delta_star(c.domain_dp, delta_star);
+  job.numerics.convection = Limiter::kSuperbee;
+  job.numerics.drag = DragLaw::kBvk;
+  job.numerics.deposition = {DepositionKind::kDiffusion, 6, FilterDiffusivity::kSeed};
+  job.numerics.tolerances.steady = 1e-5;
+  job.numerics.max_iterations = 2000;
+  return job;
+}
+
+double series_estimate(const JobSpec& job, const ParticleSet& set) {
+  const CaseSpec& c = job.case_spec;
+  const double d = c.particle_diameter_cm;
+  const int slabs = static_cast<int>(c.domain_dp[1]);
+  std::vector<double> solid(std::size_t(slabs), 0.0);
+  for (const Particle& p : set.particles)
+    solid[std::size_t(std::min(slabs - 1, static_cast<int>(p.y / d)))] += std::numbers::pi * p.d * p.d * p.d / 6;
+  const double slab_volume = c.domain_dp[0] * c.domain_dp[2] * d * d * d;
+  const double u0 = 20.0;
+  double dp = 0;
+  for (int s = static_cast<int>(c.probes.y1_dp); s < static_cast<int>(c.probes.y2_dp); ++s) {
+    const double phi = solid[std::size_t(s)] / slab_volume;
+    const double eps = 1 - phi;
+    DragState st;
+    st.eps_g = eps;
+    st.slip = u0 / eps;
+    st.d = d;
+    st.rho_g = c.gas.density_g_cm3;
+    st.mu_g = c.gas.viscosity_g_cm_s;
+    dp += phi * drag_coefficient(DragLaw::kBvk, st) * (u0 / eps) / eps * d;
+  }
+  return dp / (c.gas.density_g_cm3 * u0 * u0);
+}
+
+TEST(BurstingBubble, CoarseGridConvergesNearTheSeriesEstimate) {
+  const JobSpec job = baseline(2.0);
+  const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
+  SolveOptions options;
+  const auto dir = std::filesystem::temp_directory_path() / "gridfree_bb_vtk";
+  std::filesystem::remove_all(dir);
+  options.vtk_dir = dir;
+  const JobResult r = solve_with_particles(job, set, options);
+  ASSERT_EQ(r.status, SolveStatus::kConverged) << r.reason;
+  ASSERT_TRUE(r.dp_star.has_value());
+  const double estimate = series_estimate(job, set);
+  std::printf("dp_star %.6f (series estimate %.6f), %d iterations, particles %ld, max eps_s %.3f\n", *r.dp_star,
+              estimate, r.iterations, r.particles, r.max_solids_fraction);
+  EXPECT_NEAR(*r.dp_star / estimate, 1.0, 0.2);
+  EXPECT_EQ(r.cells, (std::array<int, 3>{15, 100, 5}));
+  EXPECT_NEAR(r.delta_star, 2.0, 1e-12);
+  EXPECT_GT(r.particles, 4000);
+  EXPECT_GT(r.max_solids_fraction, 0.2);
+  EXPECT_LT(r.max_solids_fraction, 0.6);
+  EXPECT_LT(r.residual_continuity, 1e-5);
+  EXPECT_LT(r.residual_momentum, 1e-5);
+  EXPECT_LT(r.mass_imbalance, 1e-6);
+  EXPECT_GT(r.wall_s, 0.0);
+  EXPECT_GT(r.peak_rss_mb, 0.0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "PC1.vtk"));
+  EXPECT_GT(std::filesystem::file_size(dir / "PC1.vtk"), 7500u * 7u * 4u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BurstingBubble, ResultDoesNotDependOnTheThreadCount) {
+  const JobSpec job = baseline(2.0);
+  const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const JobResult one = solve_with_particles(job, set, SolveOptions{});
+  omp_set_num_threads(2);
+  const JobResult two = solve_with_particles(job, set, SolveOptions{});
+  omp_set_num_threads(saved);
+  ASSERT_TRUE(one.dp_star && two.dp_star);
+  std::printf("1 thread %.17g (%d it), 2 threads %.17g (%d it)\n", *one.dp_star, one.iterations, *two.dp_star,
+              two.iterations);
+  // Reductions use fixed blocks and the particle deposition is serial, so
+  // the two runs should agree to round-off.
+  EXPECT_EQ(one.iterations, two.iterations);
+  EXPECT_LT(std::abs(*one.dp_star - *two.dp_star) / *one.dp_star, 1e-10);
+}
+
+}  // namespace
+}  // namespace gridfree

@@ -1,0 +1,96 @@
+// Uniform continuum beds (PHYSICS.md §6): periodic x, z; mass inflow at
+// y = 0; pressure outflow at the top. Away from the inlet every face carries
+// u = U0/ε_g and the 1-D momentum balance gives exactly
+//   dp/dy = −β u / ε_g,   β = φ D(ε_g, u)   (drag_coefficient, Model A),
+// so dp_star_exact = (β u/ε_g)(y2 − y1)/(ρ U0²), computed here independently
+// of the solver from drag_coefficient. The probes lie ≥ 10 cells from both
+// ends, where the flow is exactly uniform, so only the steady tolerance
+// (1e-7 here) separates the two: 1e-4 relative leaves a wide margin.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "drag/drag_law.h"
+#include "flow/solve.h"
+
+namespace gridfree {
+namespace {
+
+JobSpec uniform_bed(double phi, double u0, DragLaw law) {
+  JobSpec job;
+  CaseSpec& c = job.case_spec;
+  c.name = "uniform";
+  c.domain_dp = {10, 120, 10};
+  c.particle_diameter_cm = 0.01;
+  c.gas = {1e-3, 2e-4};
+  c.boundaries[0] = {BoundarySpec{BoundaryKind::kPeriodic}, BoundarySpec{BoundaryKind::kPeriodic}};
+  c.boundaries[2] = c.boundaries[0];
+  c.boundaries[1][0] = {BoundaryKind::kMassInflow, u0, 0};
+  c.boundaries[1][1] = {BoundaryKind::kPressureOutflow, 0, 0};
+  c.particles = UniformSpec{phi};
+  c.probes = {20, 100};
+  job.numerics.cells = {4, 60, 4};
+  job.numerics.convection = Limiter::kSuperbee;
+  job.numerics.drag = law;
+  job.numerics.tolerances.steady = 1e-7;
+  job.numerics.max_iterations = 2000;
+  return job;
+}
+
+double exact_dp_star(const JobSpec& job, double phi, double u0) {
+  const CaseSpec& c = job.case_spec;
+  const double eps = 1 - phi;
+  const double u = u0 / eps;
+  DragState s;
+  s.eps_g = eps;
+  s.slip = u;
+  s.d = c.particle_diameter_cm;
+  s.rho_g = c.gas.density_g_cm3;
+  s.mu_g = c.gas.viscosity_g_cm_s;
+  const double beta = phi * drag_coefficient(job.numerics.drag, s);
+  const double dy = (c.probes.y2_dp - c.probes.y1_dp) * c.particle_diameter_cm;
+  return beta * u / eps * dy / (c.gas.density_g_cm3 * u0 * u0);
+}
+
+struct Case {
+  double phi, u0;
+};
+
+TEST(UniformBed, EveryDragLawAtTwoReynoldsNumbers) {
+  for (const auto& info : drag_laws()) {
+    for (const Case& k : {Case{0.3, 20.0}, Case{0.45, 200.0}}) {
+      const JobSpec job = uniform_bed(k.phi, k.u0, info.law);
+      // Cold start (u = 0, p = 0): the iterations, not the warm start, find the answer.
+      SolveOptions options;
+      options.cold_start = true;
+      const JobResult r = solve_with_particles(job, ParticleSet{}, options);
+      SCOPED_TRACE(std::string(info.name) + " phi=" + std::to_string(k.phi) + " U0=" + std::to_string(k.u0));
+      ASSERT_EQ(r.status, SolveStatus::kConverged) << r.reason;
+      ASSERT_TRUE(r.dp_star.has_value());
+      const double exact = exact_dp_star(job, k.phi, k.u0);
+      EXPECT_NEAR(*r.dp_star / exact, 1.0, 1e-4) << "dp_star " << *r.dp_star << " exact " << exact
+                                                 << " iterations " << r.iterations;
+      std::printf("%-16s phi %.2f U0 %5.0f  dp_star %.8g exact %.8g  iterations %d\n",
+                  std::string(info.name).c_str(), k.phi, k.u0, *r.dp_star, exact, r.iterations);
+      // Mass conservation: inflow = outflow to the solver tolerance.
+      EXPECT_LT(r.mass_imbalance, 1e-6);
+    }
+  }
+}
+
+TEST(UniformBed, EmptyDomainIsPlugFlowWithNoPressureDrop) {
+  JobSpec job = uniform_bed(0.0, 20.0, DragLaw::kBvk);
+  SolveOptions options;
+  options.cold_start = true;
+  const JobResult r = solve_with_particles(job, ParticleSet{}, options);
+  ASSERT_EQ(r.status, SolveStatus::kConverged) << r.reason;
+  ASSERT_TRUE(r.dp_star.has_value());
+  // Plug flow u = U0 has zero gradients: no viscous stress, no convection
+  // change, hence no pressure difference beyond round-off of the solve.
+  EXPECT_NEAR(*r.dp_star, 0.0, 1e-6);
+  EXPECT_LT(r.mass_imbalance, 1e-9);
+}
+
+}  // namespace
+}  // namespace gridfree

@@ -1,0 +1,193 @@
+// Assembly of one momentum component (equation in momentum.h).
+#include "flow/momentum.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "flow/parallel.h"
+
+namespace gridfree {
+namespace {
+
+// Neighbour of face coordinate x along direction b (dir = ±1) in a face
+// layout: the wrapped coordinate on periodic axes, nullopt beyond a
+// non-periodic boundary.
+std::optional<std::array<int, 3>> step(const Grid& g, const FaceLayout& lay, std::array<int, 3> x,
+                                       int b, int dir) {
+  const int v = x[b] + dir;
+  if (v < 0 || v >= lay.n[b]) {
+    if (!g.periodic[b]) return std::nullopt;
+    x[b] = (v + lay.n[b]) % lay.n[b];
+    return x;
+  }
+  x[b] = v;
+  return x;
+}
+
+// Scalar-grid face index (along b) of cell x's face on `side`.
+std::size_t cell_face(const Grid& g, const FaceLayout& lay, std::array<int, 3> x, int b, int side) {
+  if (side == 1) x[b] = (g.periodic[b] && x[b] + 1 == g.n[b]) ? 0 : x[b] + 1;
+  return lay.index(x);
+}
+
+// Pointers to the Stencil7 neighbour arrays: nb[b][side].
+std::array<std::array<std::vector<double>*, 2>, 3> neighbour_arrays(Stencil7& s) {
+  return {{{&s.aw, &s.ae}, {&s.as, &s.an}, {&s.ab, &s.at}}};
+}
+
+}  // namespace
+
+void assemble_momentum(const FlowProblem& problem, const FlowState& state,
+                       const FaceVector& mass_flux, const CellField& divergence, int a,
+                       double relax, MomentumSystem& sys, FaceField& d) {
+  const Grid& g = problem.grid;
+  const FaceLayout lay(g, a);
+  const FaceField& u = state.u[a];
+  const double mu = problem.gas.mu;
+  const double V = g.cell_volume();
+  const double Aa = g.face_area(a);
+  const bool tvd = problem.convection != Limiter::kFou;
+  const std::vector<double>* source =
+      (problem.sources && !problem.sources->momentum[a].empty()) ? &problem.sources->momentum[a]
+                                                                 : nullptr;
+  Stencil7& eq = sys.eq;
+  if (d.size() != lay.size()) d = FaceField(g, a, 0.0);
+  auto nb = neighbour_arrays(eq);
+  const long faces = static_cast<long>(lay.size());
+
+#pragma omp parallel for schedule(static) if (faces > kMinParallel)
+  for (long fl = 0; fl < faces; ++fl) {
+    const std::size_t P = std::size_t(fl);
+    const std::array<int, 3> x = face_coords(lay, P);
+    const int fa = x[a];
+    for (int b = 0; b < 3; ++b) (*nb[b][0])[P] = (*nb[b][1])[P] = 0.0;
+    const FaceRole role = face_role(g, problem.bc, a, fa);
+    if (role == FaceRole::kFixed) {
+      eq.ap[P] = 1.0;
+      eq.b[P] = u[P];
+      d[P] = 0.0;
+      continue;
+    }
+    // Cells L (low) and R (high) of the face; a missing one is a ghost.
+    const bool hasL = g.periodic[a] || fa > 0;
+    const bool hasR = g.periodic[a] || fa < g.n[a];
+    std::array<int, 3> xl = x, xr = x;
+    xl[a] = fa == 0 ? g.n[a] - 1 : fa - 1;
+    if (fa == g.n[a]) xr[a] = g.n[a] - 1;  // unused when !hasR
+
+    double sum_nb = 0, net_out = 0, ap_fold = 0, b = 0, sum_matrix_nb = 0;
+    for (int bd = 0; bd < 3; ++bd) {
+      const FaceLayout& lb = mass_flux[bd].layout;
+      for (int side = 0; side < 2; ++side) {
+        const int dir = side == 0 ? -1 : 1;
+        // Mass flux F (along +bd) through this CV face, and diffusion coefficient.
+        double F = 0, D = 0;
+        std::optional<std::array<int, 3>> nx = step(g, lay, x, bd, dir);
+        TangentialGhost ghost{1.0, 0.0, 0.0};
+        if (bd == a) {
+          const bool has_cell = side == 0 ? hasL : hasR;
+          if (has_cell) {
+            const std::array<int, 3>& xc = side == 0 ? xl : xr;
+            F = 0.5 * (mass_flux[a][cell_face(g, lb, xc, a, 0)] + mass_flux[a][cell_face(g, lb, xc, a, 1)]);
+            D = mu * g.face_area(a) / g.h(a);
+          } else {
+            F = mass_flux[a][P];  // ghost cell beyond an outflow: zero gradient, no viscous flux
+            nx.reset();
+          }
+        } else {
+          double sumF = 0;
+          int count = 0;
+          if (hasL) { sumF += mass_flux[bd][cell_face(g, lb, xl, bd, side)]; ++count; }
+          if (hasR) { sumF += mass_flux[bd][cell_face(g, lb, xr, bd, side)]; ++count; }
+          F = sumF / count;
+          D = mu * g.face_area(bd) / g.h(bd);
+          if (!nx) {
+            ghost = tangential_ghost(problem.bc[bd][side]);
+            D *= ghost.diffusion;
+          }
+        }
+        const double anb = D + std::max(side == 0 ? F : -F, 0.0);
+        sum_nb += anb;
+        net_out += side == 0 ? -F : F;
+        // Where the neighbour value comes from.
+        std::size_t N = 0;
+        if (!nx) {  // ghost: φ_g = scale φ_P + value
+          ap_fold -= anb * ghost.scale;
+          b += anb * ghost.value;
+        } else {
+          N = lay.index(*nx);
+          if (N == P) {
+            ap_fold -= anb;  // a single periodic cell: the neighbour is P itself
+          } else if (bd == a && face_role(g, problem.bc, a, (*nx)[a]) == FaceRole::kFixed) {
+            b += anb * u[N];
+          } else {
+            (*nb[bd][side])[P] = anb;
+            sum_matrix_nb += anb;
+          }
+        }
+        // Deferred correction: −F_out (φ_TVD − φ_FOU) of the previous iterate.
+        if (tvd && nx && N != P) {
+          const bool from_neighbour = side == 0 ? F > 0 : F < 0;
+          const std::array<int, 3>& xc = from_neighbour ? *nx : x;
+          const auto xu = step(g, lay, xc, bd, from_neighbour ? dir : -dir);
+          if (xu) {
+            const double phi_c = u[lay.index(xc)];
+            const double phi_d = from_neighbour ? u[P] : u[N];
+            const double phi_u = u[lay.index(*xu)];
+            const double face = limited_face_value(problem.convection, phi_u, phi_c, phi_d);
+            const double f_out = side == 0 ? -F : F;
+            b -= f_out * (face - phi_c);
+          }
+        }
+      }
+    }
+    // Sources: pressure gradient, gravity, extra viscous term, drag, manufactured.
+    const double eps = state.eps_face[a][P];
+    const double pL = hasL ? state.p[g.index(xl[0], xl[1], xl[2])] : problem.bc[a][0].pressure_dyn_cm2;
+    const double pR = hasR ? state.p[g.index(xr[0], xr[1], xr[2])] : problem.bc[a][1].pressure_dyn_cm2;
+    b += eps * Aa * (pL - pR);
+    b += eps * problem.gas.rho * problem.gas.gravity[a] * V;
+    if (hasL && hasR) {
+      const double divL = divergence[g.index(xl[0], xl[1], xl[2])];
+      const double divR = divergence[g.index(xr[0], xr[1], xr[2])];
+      b += mu / 3.0 * Aa * (divR - divL);
+    }
+    b += V * state.beta_v_face[a][P];
+    if (source) b += V * (*source)[P];
+    const double ap = sum_nb + net_out + ap_fold + V * state.beta_face[a][P];
+
+    // Relaxation (the residual b + Σ a_nb φ_nb − a_P φ_P at the current
+    // iterate is the same before and after it) and the SIMPLEC coefficient.
+    const double ap_relaxed = ap / relax;
+    eq.ap[P] = ap_relaxed;
+    eq.b[P] = b + (ap_relaxed - ap) * u[P];
+    const double denom = std::max(ap_relaxed - sum_matrix_nb, 1e-3 * ap_relaxed);
+    d[P] = Aa * eps / denom;
+  }
+
+  // Residual sums in a fixed order (independent of the thread count).
+  auto row_residual = [&](std::size_t P) {
+    const std::array<int, 3> x = face_coords(lay, P);
+    double r = eq.b[P] - eq.ap[P] * u[P];
+    for (int bd = 0; bd < 3; ++bd)
+      for (int side = 0; side < 2; ++side) {
+        const double c = (*nb[bd][side])[P];
+        if (c != 0.0) r += c * u[lay.index(*step(g, lay, x, bd, side == 0 ? -1 : 1))];
+      }
+    return r;
+  };
+  sys.residual = deterministic_sum(lay.size(), [&](std::size_t P) { return std::abs(row_residual(P)); });
+  sys.residual_l2 = std::sqrt(deterministic_sum(lay.size(), [&](std::size_t P) {
+    const double r = row_residual(P);
+    return r * r;
+  }));
+  sys.rhs_l2 = std::sqrt(deterministic_sum(lay.size(), [&](std::size_t P) { return eq.b[P] * eq.b[P]; }));
+  sys.scale = deterministic_sum(lay.size(), [&](std::size_t P) {
+    return face_role(g, problem.bc, a, face_coords(lay, P)[a]) == FaceRole::kFixed
+               ? 0.0
+               : std::abs(relax * eq.ap[P] * u[P]);
+  });
+}
+
+}  // namespace gridfree

@@ -1,0 +1,140 @@
+// The SIMPLEC outer loop (simple_loop.h): a handful of named steps.
+#include "flow/simple_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <memory>
+#include <sstream>
+
+#include "flow/mass_flux.h"
+#include "flow/momentum.h"
+#include "flow/pressure_correction.h"
+#include "flow/residuals.h"
+
+namespace gridfree {
+namespace {
+
+bool finite(double x) { return std::isfinite(x); }
+
+std::string format_number(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+// Everything the loop allocates once.
+struct Workspace {
+  explicit Workspace(const Grid& g)
+      : pressure_eq(g),
+        momentum{MomentumSystem(FaceLayout(g, 0).as_grid(g)), MomentumSystem(FaceLayout(g, 1).as_grid(g)),
+                 MomentumSystem(FaceLayout(g, 2).as_grid(g))} {}
+  Stencil7 pressure_eq;
+  std::array<MomentumSystem, 3> momentum;
+  std::vector<double> p_prime;
+  FaceVector mass_flux;
+  FaceVector d;  // SIMPLEC coefficients
+};
+
+}  // namespace
+
+SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& settings,
+                         FlowState& state, const DragUpdate& drag,
+                         const QuantityOfInterest& qoi, const IterationCallback& on_iteration) {
+  const Grid& g = problem.grid;
+  auto ws = std::make_unique<Workspace>(g);
+  update_eps_faces(problem, state);
+  apply_fixed_faces(problem, state);
+  if (state.drag.beta.empty()) state.drag.beta.assign(g.cells(), 0.0);
+
+  SimpleOutcome out;
+  std::deque<double> qoi_history;
+  double first_continuity = -1, first_momentum = -1;
+  const LinearSolverSettings momentum_solver{settings.momentum_tolerance, settings.linear_max_iterations};
+  const LinearSolverSettings pressure_solver{settings.pressure_tolerance, settings.linear_max_iterations};
+
+  for (int it = 1; it <= settings.max_iterations; ++it) {
+    IterationReport report;
+    report.iteration = it;
+
+    // 1. Drag from the current velocity field.
+    if (drag && ((it - 1) % std::max(1, settings.drag_interval) == 0)) drag(state, state.drag);
+    update_drag_faces(problem, state);
+
+    // 2. Momentum predictor: u* for each component with lagged mass fluxes.
+    compute_mass_fluxes(problem, state, ws->mass_flux);
+    const CellField divergence = velocity_divergence(g, state.u);
+    double momentum_residual = 0, momentum_scale = 0;
+    for (int a = 0; a < 3; ++a) {
+      MomentumSystem& sys = ws->momentum[a];
+      assemble_momentum(problem, state, ws->mass_flux, divergence, a, settings.relax_u, sys, ws->d[a]);
+      momentum_residual += sys.residual;
+      momentum_scale += sys.scale;
+      // Inexact solve: reduce this component's residual ||r||/||b|| 10×
+      // (clamped to [linear_floor, momentum_tolerance]).
+      LinearSolverSettings solver = momentum_solver;
+      solver.tolerance = std::clamp(0.1 * normalized(sys.residual_l2, sys.rhs_l2), settings.linear_floor,
+                                    settings.momentum_tolerance);
+      const LinearSolveStats st = solve_general(sys.eq, state.u[a].values, solver);
+      report.momentum_iterations += st.iterations;
+      if (!st.converged) out.linear_failures = true;
+    }
+
+    // 3. Pressure correction: p ← p + α_p p', u ← u* + d ∇p'.
+    const PressureCorrectionResult pc =
+        correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->pressure_eq, ws->p_prime);
+    report.pressure_iterations = pc.solve.iterations;
+    if (!pc.solve.converged) out.linear_failures = true;
+
+    // 4. Monitor: residuals, quantity of interest, status.
+    report.continuity = normalized(pc.imbalance, continuity_reference(problem, ws->mass_flux));
+    report.momentum = normalized(momentum_residual, momentum_scale);
+    if (qoi) {
+      report.qoi = qoi(state);
+      qoi_history.push_back(*report.qoi);
+      if (static_cast<int>(qoi_history.size()) > settings.qoi_window + 1) qoi_history.pop_front();
+      const double oldest = qoi_history.front();
+      report.qoi_change = qoi_history.size() > 1
+                              ? normalized(std::abs(*report.qoi - oldest), std::abs(*report.qoi))
+                              : 1.0;
+      if (static_cast<int>(qoi_history.size()) <= settings.qoi_window) report.qoi_change = std::max(report.qoi_change, 1.0);
+    }
+    if (it <= 5) {  // blow-up reference: the early residuals (at least 1e-2)
+      first_continuity = std::max({first_continuity, report.continuity, 1e-2});
+      first_momentum = std::max({first_momentum, report.momentum, 1e-2});
+    }
+    out.iterations = it;
+    out.continuity = report.continuity;
+    out.momentum = report.momentum;
+    out.qoi = report.qoi;
+    out.qoi_change = report.qoi_change;
+    if (on_iteration) on_iteration(report);
+
+    const bool bad = !finite(report.continuity) || !finite(report.momentum) ||
+                     (report.qoi && !finite(*report.qoi));
+    if (bad || report.continuity > settings.blowup * first_continuity ||
+        report.momentum > settings.blowup * first_momentum) {
+      out.status = SolveStatus::kDiverged;
+      out.reason = "diverged at iteration " + std::to_string(it) + ": continuity residual " +
+                   format_number(report.continuity) + ", momentum residual " + format_number(report.momentum);
+      out.qoi.reset();
+      return out;
+    }
+    const double tol = settings.steady_tolerance;
+    if (it >= settings.min_iterations && report.continuity < tol && report.momentum < tol &&
+        (!qoi || report.qoi_change < tol)) {
+      out.status = SolveStatus::kConverged;
+      return out;
+    }
+  }
+  out.status = SolveStatus::kNotConverged;
+  out.reason = "not converged after " + std::to_string(settings.max_iterations) +
+               " iterations: continuity residual " + format_number(out.continuity) +
+               ", momentum residual " + format_number(out.momentum) +
+               ", relative change of the quantity of interest " + format_number(out.qoi_change) +
+               " (tolerance " + format_number(settings.steady_tolerance) + ")";
+  return out;
+}
+
+}  // namespace gridfree

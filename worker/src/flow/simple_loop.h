@@ -1,0 +1,74 @@
+// SIMPLEC outer iterations to a steady state.
+//
+// One outer iteration:
+//   1. drag      β, βv̄ from the current velocity (every `drag_interval`)
+//   2. momentum  assemble and solve each component for u* (BiCGSTAB)
+//   3. pressure  solve the pressure correction, correct p and u (CG + MG)
+//   4. monitor   normalized residuals, the quantity of interest, status
+//
+// Steady when R_c < tol AND R_m < tol AND the relative change of the
+// quantity of interest over the last `qoi_window` iterations is < tol
+// (docs/SOLVER.md). Diverged when a residual or the QoI is not finite, or a
+// residual exceeds `blowup` × its largest value in the first 5 iterations
+// (at least 1e-2).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "flow/flow_state.h"
+#include "job/result.h"
+
+namespace gridfree {
+
+struct SimpleSettings {
+  double relax_u = 0.8;              // α_u, momentum under-relaxation
+  double relax_p = 1.0;              // α_p (SIMPLEC needs none)
+  // BiCGSTAB relative tolerance: 0.1 × the component's normalized residual,
+  // clamped to [linear_floor, momentum_tolerance].
+  double momentum_tolerance = 1e-2;
+  double linear_floor = 1e-12;
+  double pressure_tolerance = 1e-2;  // CG on p' (initial guess 0): reduction of ||b||
+  int linear_max_iterations = 500;
+  double steady_tolerance = 1e-5;
+  int max_iterations = 20000;
+  int min_iterations = 10;
+  int qoi_window = 10;
+  int drag_interval = 1;             // outer iterations between drag updates
+  double blowup = 1e6;
+};
+
+struct IterationReport {
+  int iteration = 0;
+  double continuity = 0;
+  double momentum = 0;
+  std::optional<double> qoi;
+  double qoi_change = 0;
+  int pressure_iterations = 0;
+  int momentum_iterations = 0;
+};
+
+struct SimpleOutcome {
+  SolveStatus status = SolveStatus::kNotConverged;
+  std::string reason;
+  int iterations = 0;
+  double continuity = 0;
+  double momentum = 0;
+  std::optional<double> qoi;
+  double qoi_change = 0;
+  bool linear_failures = false;  // some linear solve missed its tolerance
+};
+
+// Recomputes state.drag from state (β, βv̄ at cell centres).
+using DragUpdate = std::function<void(const FlowState&, DragField&)>;
+using QuantityOfInterest = std::function<double(const FlowState&)>;
+using IterationCallback = std::function<void(const IterationReport&)>;
+
+// Iterates `state` (ε_g, initial p and u set; ε̄ faces are derived here) to a
+// steady state. `drag` may be empty (β kept as given), `qoi` may be empty.
+SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& settings,
+                         FlowState& state, const DragUpdate& drag,
+                         const QuantityOfInterest& qoi, const IterationCallback& on_iteration);
+
+}  // namespace gridfree

@@ -1,0 +1,161 @@
+// The solve pipeline of one job (solve.h), with timing and memory figures.
+#include "flow/solve.h"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <spdlog/spdlog.h>
+
+#include "coupling/drag_field.h"
+#include "coupling/solids_fraction.h"
+#include "flow/initial_state.h"
+#include "flow/mass_flux.h"
+#include "flow/probes.h"
+#include "flow/vtk_writer.h"
+
+namespace gridfree {
+namespace {
+
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec) + double(u.ru_stime.tv_sec) +
+         1e-6 * double(u.ru_stime.tv_usec);
+}
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+SimpleSettings simple_settings_for(const NumericsSpec& numerics, const SimpleSettings& base) {
+  SimpleSettings s = base;
+  s.steady_tolerance = numerics.tolerances.steady;
+  s.max_iterations = numerics.max_iterations;
+  return s;
+}
+
+Grid job_grid(const CaseSpec& case_spec, const std::array<int, 3>& cells) {
+  Grid g;
+  g.n = cells;
+  g.length = case_spec.domain_cm();
+  for (int a = 0; a < 3; ++a) g.periodic[a] = case_spec.periodic(a);
+  return g;
+}
+
+JobResult solve_with_particles(const JobSpec& job, const ParticleSet& particles,
+                               const SolveOptions& options) {
+  const auto t0 = Clock::now();
+  const double cpu0 = cpu_seconds();
+  const CaseSpec& cs = job.case_spec;
+  const NumericsSpec& num = job.numerics;
+  JobResult result;
+
+  // 1. Grid.
+  FlowProblem problem;
+  problem.grid = job_grid(cs, num.cells);
+  problem.bc = cs.boundaries;
+  problem.gas = {cs.gas.density_g_cm3, cs.gas.viscosity_g_cm_s, cs.gravity_cm_s2};
+  problem.convection = num.convection;
+  const Grid& g = problem.grid;
+  const double d = cs.particle_diameter_cm;
+  result.cells = num.cells;
+  result.delta_star = g.delta_star(d);
+
+  // 2–3. Particles and ε_s.
+  const auto* uniform = std::get_if<UniformSpec>(&cs.particles);
+  SolidsFraction sf = uniform ? uniform_solids_fraction(g, uniform->solids_fraction)
+                              : deposit_solids_fraction(g, particles.particles, num.deposition, d,
+                                                        num.tolerances.filter);
+  result.particles = uniform ? 0 : static_cast<long>(particles.particles.size());
+  result.max_solids_fraction = sf.max;
+  if (sf.filtered) {
+    result.extra["filter"] = {{"steps", sf.filter.steps},
+                              {"iterations", sf.filter.total_iterations},
+                              {"final_residual", sf.filter.worst_final_residual},
+                              {"converged", sf.filter.converged}};
+  }
+  const double t_deposit = seconds_since(t0);
+  auto finish = [&](JobResult& r) {
+    r.wall_s = seconds_since(t0);
+    r.cpu_s = cpu_seconds() - cpu0;
+    r.peak_rss_mb = peak_rss_mb();
+    r.extra["timing"]["deposition_s"] = t_deposit;
+  };
+  if (auto why = overfull_cell_reason(g, sf, d, num.deposition.kind == DepositionKind::kCentroid && !uniform)) {
+    result.status = SolveStatus::kFailed;
+    result.reason = *why;
+    finish(result);
+    return result;
+  }
+
+  // 4. Drag coupling, warm start and outer iterations.
+  const DragSettings drag_settings{num.drag, d, cs.gas.density_g_cm3, cs.gas.viscosity_g_cm_s};
+  std::optional<ParticleDragField> particle_drag;
+  if (!uniform) {
+    std::optional<FilterSettings> filter;
+    if (num.deposition.kind == DepositionKind::kDiffusion)
+      filter = filter_settings(num.deposition, d, num.tolerances.filter);
+    particle_drag.emplace(g, particles.particles, drag_settings, filter);
+  }
+  const DragUpdate drag = [&](const FlowState& st, DragField& out) {
+    const auto u_cell = cell_centre_velocity(g, st.u);
+    if (uniform) uniform_drag_field(g, drag_settings, uniform->solids_fraction, st.eps_g, u_cell, out);
+    else particle_drag->compute(st.eps_g, u_cell, out);
+  };
+  FlowState state;
+  warm_start(problem, sf.eps_s, drag, state, options.cold_start);
+
+  const double u0 = inflow_velocity(problem.bc);
+  const double y1 = cs.probes.y1_dp * d, y2 = cs.probes.y2_dp * d;
+  QuantityOfInterest qoi;
+  if (u0 != 0.0)
+    qoi = [&](const FlowState& st) { return dp_star(g, st.p, y1, y2, problem.gas.rho, u0); };
+
+  const SimpleSettings settings = simple_settings_for(num, options.simple);
+  const auto t_iter = Clock::now();
+  const SimpleOutcome out = run_simple(problem, settings, state, drag, qoi, options.on_iteration);
+  const double t_iterations = seconds_since(t_iter);
+
+  // 5. Result.
+  result.status = out.status;
+  result.reason = out.reason;
+  result.iterations = out.iterations;
+  result.residual_continuity = out.continuity;
+  result.residual_momentum = out.momentum;
+  result.dp_star_change = out.qoi_change;
+  if (out.qoi && std::isfinite(*out.qoi)) result.dp_star = out.qoi;
+  FaceVector flux;
+  compute_mass_fluxes(problem, state, flux);
+  const BoundaryFlux bf = boundary_mass_flux(problem, flux);
+  result.mass_imbalance = bf.in > 0 ? std::abs(bf.in - bf.out) / bf.in : 0.0;
+  if (!std::isfinite(result.mass_imbalance)) result.mass_imbalance = 0.0;
+  result.extra["timing"]["iterations_s"] = t_iterations;
+  result.extra["settings"] = {{"algorithm", "SIMPLEC"},
+                              {"relax_u", settings.relax_u},
+                              {"relax_p", settings.relax_p},
+                              {"momentum_tolerance", settings.momentum_tolerance},
+                              {"pressure_tolerance", settings.pressure_tolerance},
+                              {"drag_interval", settings.drag_interval}};
+  if (out.linear_failures) result.extra["linear_solver_warnings"] = true;
+  if (particle_drag) result.extra["drag_updates"] = particle_drag->updates();
+
+  if (options.vtk_dir) {
+    const auto file = *options.vtk_dir / (cs.name.empty() ? std::string("fields.vtk") : cs.name + ".vtk");
+    write_vtk(file, g, sf.eps_s, state);
+    result.extra["vtk"] = file.filename().string();
+  }
+  finish(result);
+  return result;
+}
+
+}  // namespace gridfree

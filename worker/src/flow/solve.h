@@ -1,0 +1,44 @@
+// The whole frozen-bed solve of one job on one grid:
+//   1. grid from the case and numerics.grid
+//   2. particles (generator, file) or a uniform continuum bed
+//   3. ε_s by deposition (centroid fails on cells with ε_s ≥ 1)
+//   4. warm start, SIMPLEC outer iterations with the drag field updated
+//      from the particles (coupling/)
+//   5. dp_star probes, diagnostics, timing, peak memory, status and reason.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+#include "flow/simple_loop.h"
+#include "job/job_spec.h"
+#include "job/result.h"
+#include "particles/particle.h"
+
+namespace gridfree {
+
+struct SolveOptions {
+  std::optional<std::filesystem::path> vtk_dir;  // write the final fields here
+  SimpleSettings simple;                         // relaxation and inner tolerances
+  bool cold_start = false;                       // u = 0, p = 0 instead of the warm start
+  // Called after every outer iteration (progress output).
+  IterationCallback on_iteration;
+};
+
+// SimpleSettings of a job: steady tolerance and max_iterations from the job,
+// the rest from `base`.
+SimpleSettings simple_settings_for(const NumericsSpec& numerics, const SimpleSettings& base);
+
+// The grid of a case: cells from the job, lengths L* d, periodic flags.
+Grid job_grid(const CaseSpec& case_spec, const std::array<int, 3>& cells);
+
+// Loads the particles (particles/) and solves.
+JobResult solve_job(const JobSpec& job, const SolveOptions& options);
+
+// Solves with the given particles (ignored for a uniform source). Does not
+// fill job_hash and version.
+JobResult solve_with_particles(const JobSpec& job, const ParticleSet& particles,
+                               const SolveOptions& options);
+
+}  // namespace gridfree

@@ -1,0 +1,118 @@
+// parse_numerics and parse_job (job/job_spec.h): schema validation first
+// (schemas/job.schema.json, every problem with its JSON pointer), then the
+// semantic checks, all collected into one InputError.
+#include <cmath>
+
+#include "core/json_fields.h"
+#include "core/schema_validation.h"
+#include "grid/grid.h"
+#include "job/job_spec.h"
+
+namespace gridfree {
+
+std::string_view deposition_kind_name(DepositionKind kind) {
+  return kind == DepositionKind::kDiffusion ? "diffusion" : "centroid";
+}
+
+std::string_view filter_diffusivity_name(FilterDiffusivity d) {
+  return d == FilterDiffusivity::kSeed ? "seed" : "mfix";
+}
+
+NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, const std::array<double, 3>& domain_dp,
+                            ProblemList& problems) {
+  NumericsSpec n;
+  if (!j.is_object()) {
+    problems.add(path, "numerics must be an object");
+    return n;
+  }
+
+  // Grid: cells per direction, or Δ* → round(L*/Δ*) (at least 1).
+  const std::string grid_at = child_pointer(path, "grid");
+  const auto& grid = read_object(j, "grid", path, problems, true);
+  if (grid.contains("cells")) {
+    const auto& cells = grid.at("cells");
+    if (!cells.is_array() || cells.size() != 3) {
+      problems.add(child_pointer(grid_at, "cells"), "expected [nx, ny, nz]");
+    } else {
+      for (std::size_t a = 0; a < 3; ++a) {
+        const auto& c = cells[a];
+        if (!c.is_number_integer() || c.get<std::int64_t>() < 1 || c.get<std::int64_t>() > 1000000)
+          problems.add(child_pointer(child_pointer(grid_at, "cells"), a), "must be an integer from 1 to 1000000");
+        else
+          n.cells[a] = static_cast<int>(c.get<std::int64_t>());
+      }
+    }
+  } else {
+    const double delta_star = read_number(grid, "delta_star", grid_at, problems);
+    if (!(delta_star > 0)) {
+      problems.add(child_pointer(grid_at, "delta_star"), "must be > 0");
+    } else {
+      bool domain_ok = true;
+      for (double l : domain_dp) domain_ok = domain_ok && l > 0 && l / delta_star < 1e6;
+      if (domain_ok) n.cells = cells_for_delta_star(domain_dp, delta_star);
+      else problems.add(child_pointer(grid_at, "delta_star"), "gives no valid grid for this domain");
+    }
+  }
+  const double total = static_cast<double>(n.cells[0]) * n.cells[1] * n.cells[2];
+  if (total > 2e9) problems.add(grid_at, "more than 2e9 cells");
+
+  const std::string convection = read_string(j, "convection", path, problems);
+  if (auto l = limiter_from_name(convection)) n.convection = *l;
+  else if (!convection.empty())
+    problems.add(child_pointer(path, "convection"), "'" + convection + "' is not one of " + limiter_names());
+  const std::string drag = read_string(j, "drag", path, problems);
+  if (auto d = drag_law_from_name(drag)) n.drag = *d;
+  else if (!drag.empty()) problems.add(child_pointer(path, "drag"), "'" + drag + "' is not one of " + drag_law_names());
+
+  const std::string dep_at = child_pointer(path, "deposition");
+  const auto& dep = read_object(j, "deposition", path, problems, true);
+  const std::string kind = read_string(dep, "kind", dep_at, problems);
+  if (kind == "diffusion") n.deposition.kind = DepositionKind::kDiffusion;
+  else if (kind == "centroid") n.deposition.kind = DepositionKind::kCentroid;
+  else if (!kind.empty()) problems.add(child_pointer(dep_at, "kind"), "'" + kind + "' is not one of diffusion, centroid");
+  if (n.deposition.kind == DepositionKind::kDiffusion) {
+    n.deposition.fwhm_dp = read_number(dep, "fwhm_dp", dep_at, problems);
+    if (!(n.deposition.fwhm_dp > 0)) problems.add(child_pointer(dep_at, "fwhm_dp"), "the filter width must be > 0");
+  } else {
+    n.deposition.fwhm_dp = read_number(dep, "fwhm_dp", dep_at, problems, 0.0);
+  }
+  const std::string diffusivity = read_string(dep, "diffusivity", dep_at, problems, "seed");
+  if (diffusivity == "seed") n.deposition.diffusivity = FilterDiffusivity::kSeed;
+  else if (diffusivity == "mfix") n.deposition.diffusivity = FilterDiffusivity::kMfix;
+  else problems.add(child_pointer(dep_at, "diffusivity"), "'" + diffusivity + "' is not one of seed, mfix");
+
+  const std::string tol_at = child_pointer(path, "tolerances");
+  const auto& tol = read_object(j, "tolerances", path, problems);
+  const TolerancesSpec defaults;
+  n.tolerances.linear = read_number(tol, "linear", tol_at, problems, defaults.linear);
+  n.tolerances.filter = read_number(tol, "filter", tol_at, problems, defaults.filter);
+  n.tolerances.steady = read_number(tol, "steady", tol_at, problems, defaults.steady);
+  for (const auto& [key, value] : {std::pair{"linear", n.tolerances.linear}, std::pair{"filter", n.tolerances.filter},
+                                   std::pair{"steady", n.tolerances.steady}})
+    if (!(value > 0 && value < 1)) problems.add(child_pointer(tol_at, key), "must be in (0, 1)");
+
+  const std::int64_t iterations = read_integer(j, "max_iterations", path, problems, 20000);
+  if (iterations < 1 || iterations > 1000000000) problems.add(child_pointer(path, "max_iterations"), "must be from 1 to 1e9");
+  else n.max_iterations = static_cast<int>(iterations);
+  return n;
+}
+
+JobSpec parse_job(const nlohmann::json& doc, const std::filesystem::path& base_dir) {
+  const std::vector<Problem> schema_problems = validate_against_schema(doc, "job.schema");
+  if (!schema_problems.empty()) throw InputError(schema_problems);
+
+  ProblemList problems;
+  JobSpec job;
+  job.case_spec = parse_case(doc.at("case"), "/case", base_dir, problems);
+  job.numerics = parse_numerics(doc.at("numerics"), "/numerics", job.case_spec.domain_dp, problems);
+  problems.throw_if_any();
+  job.source = doc;
+  return job;
+}
+
+JobSpec parse_job_file(const std::filesystem::path& file) {
+  const nlohmann::json doc = read_json_file(file);
+  return parse_job(doc, file.has_parent_path() ? file.parent_path() : std::filesystem::path("."));
+}
+
+}  // namespace gridfree
