@@ -47,7 +47,8 @@ void uniform_drag_field(const Grid& grid, const DragSettings& settings, double p
 
 ParticleDragField::ParticleDragField(const Grid& grid, std::vector<Particle> particles,
                                      const DragSettings& settings, std::optional<FilterSettings> filter)
-    : grid_(grid), particles_(std::move(particles)), settings_(settings), filter_(std::move(filter)) {
+    : grid_(grid), particles_(std::move(particles)), settings_(settings) {
+  if (filter) filter_.emplace(grid_, *filter);
   cell_.resize(particles_.size());
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     cell_[i] = cell_of_particle(grid_, particles_[i]);
@@ -90,9 +91,9 @@ void ParticleDragField::compute(const std::vector<double>& eps_g, const std::arr
   }
   // Filter both (diffusion deposition).
   if (filter_) {
-    last_filter_ = apply_filter(grid_, *filter_, out.beta);
+    last_filter_ = filter_->apply(out.beta);
     if (moving_)
-      for (int a = 0; a < 3; ++a) apply_filter(grid_, *filter_, out.beta_v[a]);
+      for (int a = 0; a < 3; ++a) filter_->apply(out.beta_v[a]);
   }
   ++updates_;
 }

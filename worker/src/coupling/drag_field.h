@@ -57,7 +57,7 @@ class ParticleDragField {
   std::vector<Particle> particles_;
   std::vector<std::size_t> cell_;  // cell of each particle centre
   DragSettings settings_;
-  std::optional<FilterSettings> filter_;
+  std::optional<DiffusionFilter> filter_;  // built once: matrix and multigrid reused every update
   bool moving_ = false;            // some particle has a non-zero velocity
   std::vector<double> f_;          // f_p per particle
   FilterStats last_filter_;

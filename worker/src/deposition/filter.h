@@ -19,7 +19,15 @@ enum class FilterDiffusivity { kSeed, kMfix };
 struct FilterSettings {
   double fwhm_cm = 0;                       // δ_f, cm
   FilterDiffusivity diffusivity = FilterDiffusivity::kSeed;
-  int steps = 1;                            // backward-Euler steps over τ ∈ [0,1]
+  // Backward-Euler steps over τ ∈ [0,1]. The variance is exact for any count,
+  // but the kernel shape is not: one step's kernel is the modified-Helmholtz
+  // Green's function (∝ e^{−r/ℓ}/r in 3-D, singular at the particle), so the
+  // filtered field sharpens as the grid refines and the nonlinear drag
+  // follows. Measured on the bursting bubble (PC1, superbee, BVK, fwhm 6):
+  // one step gives dp* = 1001, 1083, 1245 at Δ* = 3.3, 1, 0.5 (no grid
+  // convergence); eight steps give 1001, 1023, 1019. Eight steps cost ≈ 1.5×
+  // the one-step solve time at Δ* = 1 (docs/BENCHMARKS.md).
+  int steps = 8;
   double tolerance = 1e-10;                 // relative residual of each linear solve
   int max_iterations = 10000;               // per linear solve
 };

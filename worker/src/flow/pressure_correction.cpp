@@ -18,7 +18,7 @@ std::array<std::array<std::vector<double>*, 2>, 3> neighbour_arrays(Stencil7& s)
 PressureCorrectionResult correct_pressure(const FlowProblem& problem, FlowState& state,
                                           const FaceVector& d, double relax_p,
                                           const LinearSolverSettings& settings, Stencil7& eq,
-                                          std::vector<double>& p_prime) {
+                                          SymmetricSolver& solver, std::vector<double>& p_prime) {
   const Grid& g = problem.grid;
   const double rho = problem.gas.rho;
   FaceVector flux;
@@ -71,7 +71,7 @@ PressureCorrectionResult correct_pressure(const FlowProblem& problem, FlowState&
   }
 
   p_prime.assign(g.cells(), 0.0);
-  if (result.imbalance > 0) result.solve = solve_symmetric(eq, p_prime, settings);
+  if (result.imbalance > 0) result.solve = solver.solve(eq, p_prime, settings);
   else result.solve.converged = true;
 
   // p ← p + α_p p'.

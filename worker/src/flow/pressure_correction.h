@@ -17,6 +17,7 @@
 #include "flow/fields.h"
 #include "flow/flow_state.h"
 #include "linalg/stencil.h"
+#include "linalg/symmetric_solver.h"
 
 namespace gridfree {
 
@@ -29,6 +30,6 @@ struct PressureCorrectionResult {
 PressureCorrectionResult correct_pressure(const FlowProblem& problem, FlowState& state,
                                           const FaceVector& d, double relax_p,
                                           const LinearSolverSettings& settings, Stencil7& eq,
-                                          std::vector<double>& p_prime);
+                                          SymmetricSolver& solver, std::vector<double>& p_prime);
 
 }  // namespace gridfree

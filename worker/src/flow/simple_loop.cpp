@@ -31,6 +31,7 @@ struct Workspace {
         momentum{MomentumSystem(FaceLayout(g, 0).as_grid(g)), MomentumSystem(FaceLayout(g, 1).as_grid(g)),
                  MomentumSystem(FaceLayout(g, 2).as_grid(g))} {}
   Stencil7 pressure_eq;
+  SymmetricSolver pressure_solver;  // multigrid hierarchy kept across outer iterations
   std::array<MomentumSystem, 3> momentum;
   std::vector<double> p_prime;
   FaceVector mass_flux;
@@ -83,7 +84,8 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
 
     // 3. Pressure correction: p ← p + α_p p', u ← u* + d ∇p'.
     const PressureCorrectionResult pc =
-        correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->pressure_eq, ws->p_prime);
+        correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->pressure_eq,
+                       ws->pressure_solver, ws->p_prime);
     report.pressure_iterations = pc.solve.iterations;
     if (!pc.solve.converged) out.linear_failures = true;
 
