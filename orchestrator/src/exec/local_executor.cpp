@@ -13,34 +13,14 @@
 #include <sstream>
 #include <thread>
 
+#include "core/process_identity.h"
+
 extern char** environ;
 
 namespace gridfree {
-namespace {
-
-std::string host_name() {
-  char buf[256] = {};
-  if (gethostname(buf, sizeof buf - 1) != 0) return "localhost";
-  return buf;
-}
-
-std::string start_time(long pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(in, line)) return "";
-  const auto close = line.rfind(')');
-  if (close == std::string::npos || close + 2 > line.size()) return "";
-  std::istringstream rest(line.substr(close + 2));
-  std::string field;
-  for (int i = 3; i <= 22 && (rest >> field); ++i)
-    if (i == 22) return field;
-  return "";
-}
-
-}  // namespace
 
 std::string process_identity(pid_t pid) {
-  return host_name() + ":" + std::to_string(pid) + ":" + start_time(pid);
+  return process_identity_string(pid);
 }
 
 bool kill_process_group_if_alive(const std::string& identity) {
@@ -54,7 +34,7 @@ bool kill_process_group_if_alive(const std::string& identity) {
     return false;
   }
   const std::string started = identity.substr(b + 1);
-  if (pid <= 1 || started.empty() || start_time(pid) != started) return false;
+  if (pid <= 1 || started.empty() || process_start_time(pid) != started) return false;
   return killpg(static_cast<pid_t>(pid), SIGKILL) == 0;
 }
 
