@@ -6,7 +6,7 @@ WERROR    ?= OFF
 BUILD_TYPE ?= Release
 CTEST_ARGS ?=
 
-.PHONY: all deps test-deps configure build test test-unit demo bench clean
+.PHONY: all deps test-deps configure build test test-unit demo bench bench-quick clean
 
 all: build
 
@@ -35,6 +35,9 @@ demo: build
 
 bench: build
 	@bench/run.sh $(BUILD)/bin
+
+bench-quick: build
+	@bench/run.sh $(BUILD)/bin --quick
 
 clean:
 	@rm -rf $(BUILD)

@@ -77,10 +77,16 @@ int run_solve(const SolveCommandOptions& o) {
   auto last = start;
   options.on_iteration = [&](const IterationReport& r) {
     const auto now = std::chrono::steady_clock::now();
-    if (r.iteration != 1 && now - last < std::chrono::seconds(2)) return;
+    const bool every = spdlog::should_log(spdlog::level::debug);  // -v: every iteration
+    if (!every && r.iteration != 1 && now - last < std::chrono::seconds(2)) return;
     last = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
-    if (r.qoi)
+    if (every)
+      spdlog::debug("iteration {:6d}  continuity {:.2e}  momentum {:.2e}  dp_star {:.8g} (change {:.1e})  "
+                    "pressure {} / momentum {} linear iterations  {:.2f} s",
+                    r.iteration, r.continuity, r.momentum, r.qoi.value_or(0.0), r.qoi_change,
+                    r.pressure_iterations, r.momentum_iterations, elapsed);
+    else if (r.qoi)
       spdlog::info("iteration {:6d}  continuity {:.2e}  momentum {:.2e}  dp_star {:.6g} (change {:.1e})  {:.1f} s",
                    r.iteration, r.continuity, r.momentum, *r.qoi, r.qoi_change, elapsed);
     else

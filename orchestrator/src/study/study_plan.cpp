@@ -60,6 +60,13 @@ Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, i
   return plan;
 }
 
+// "a + b N^(1/3)" from the constants of the iteration model.
+static std::string iterations_model_text() {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g + %g N^(1/3)", kBaseIterations, kIterationsPerCellRoot);
+  return buf;
+}
+
 nlohmann::json plan_to_json(const Plan& plan) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& r : plan.rows)
@@ -79,7 +86,7 @@ nlohmann::json plan_to_json(const Plan& plan) {
           {"model",
            {{"bytes_per_cell", kBytesPerCell},
             {"seconds_per_cell_iteration", kSecondsPerCellIteration},
-            {"iterations", "200 + 10 N^(1/3)"}}}};
+            {"iterations", iterations_model_text()}}}};
 }
 
 std::string human_bytes(double bytes) {

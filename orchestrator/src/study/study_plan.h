@@ -18,16 +18,16 @@
 
 namespace gridfree {
 
-// Cost model, fitted to the bursting-bubble baseline (docs/BENCHMARKS.md):
-// peak RSS 10.9 MB at 7.5 k cells and 42 MB at 60 k cells → ≈ 600 B/cell
-// plus a few MB (the base below is kept generous); SIMPLEC iterations 66,
-// 104, 212 at 1.6 k, 7.5 k, 60 k cells ≈ 5.5·N^(1/3); 1.9–2.4 µs of CPU per
-// cell and iteration.
-inline constexpr double kBytesPerCell = 600.0;
+// Cost model, fitted to the bursting-bubble baseline (docs/BENCHMARKS.md,
+// solver/3, 2026-11-23): peak RSS 55.5 MB at 60 k cells and 396 MB at
+// 480 k → ≈ 850 B/cell plus a fixed part (the base below is kept generous);
+// SIMPLEC iterations 41, 65, 125, 229 at 1.6 k, 7.5 k, 60 k, 480 k cells
+// ≈ 20 + 2.65·N^(1/3); 1.7–1.8 µs of CPU per cell and iteration.
+inline constexpr double kBytesPerCell = 850.0;
 inline constexpr double kBaseBytes = 64.0 * 1024 * 1024;  // executable, particles, buffers
-inline constexpr double kBaseIterations = 0.0;
-inline constexpr double kIterationsPerCellRoot = 5.5;
-inline constexpr double kSecondsPerCellIteration = 2.0e-6;  // one core
+inline constexpr double kBaseIterations = 20.0;
+inline constexpr double kIterationsPerCellRoot = 2.65;
+inline constexpr double kSecondsPerCellIteration = 1.8e-6;  // one core
 
 std::uint64_t physical_memory_bytes();  // sysconf(_SC_PHYS_PAGES) · page size
 double estimated_memory_bytes(const std::array<int, 3>& cells);

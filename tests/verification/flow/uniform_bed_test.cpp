@@ -79,6 +79,30 @@ TEST(UniformBed, EveryDragLawAtTwoReynoldsNumbers) {
   }
 }
 
+// With gravity the balance gains the gas head, ε_g dp/dy = ε_g ρ g_y − β u:
+//   dp_star = (β u/ε_g − ρ g_y)(y2 − y1)/(ρ U0²),
+// and an empty domain is hydrostatic, dp_star = −g_y (y2 − y1)/U0².
+TEST(UniformBed, GravityAddsTheGasHead) {
+  const double g_y = -981.0;
+  for (const Case& k : {Case{0.0, 20.0}, Case{0.3, 20.0}}) {
+    JobSpec job = uniform_bed(k.phi, k.u0, DragLaw::kBvk);
+    job.case_spec.gravity_cm_s2 = {0, g_y, 0};
+    SolveOptions options;
+    options.cold_start = true;
+    const JobResult r = solve_with_particles(job, ParticleSet{}, options);
+    SCOPED_TRACE("phi=" + std::to_string(k.phi));
+    ASSERT_EQ(r.status, SolveStatus::kConverged) << r.reason;
+    ASSERT_TRUE(r.dp_star.has_value());
+    const double dy = (job.case_spec.probes.y2_dp - job.case_spec.probes.y1_dp) * job.case_spec.particle_diameter_cm;
+    const double head = -g_y * dy / (k.u0 * k.u0);
+    const double exact = exact_dp_star(job, k.phi, k.u0) + head;
+    EXPECT_NEAR(*r.dp_star / exact, 1.0, 1e-4) << "dp_star " << *r.dp_star << " exact " << exact;
+    if (k.phi == 0.0) {
+      EXPECT_NEAR(exact, 1.962, 1e-12);  // 981 · 0.8 cm / (20 cm/s)²
+    }
+  }
+}
+
 TEST(UniformBed, EmptyDomainIsPlugFlowWithNoPressureDrop) {
   JobSpec job = uniform_bed(0.0, 20.0, DragLaw::kBvk);
   SolveOptions options;

@@ -91,7 +91,7 @@ void ParticleDragField::compute(const std::vector<double>& eps_g, const std::arr
   }
   // Filter both (diffusion deposition).
   if (filter_) {
-    last_filter_ = filter_->apply(out.beta);
+    last_filter_ = filter_->apply(out.beta, beta_warm_);
     if (moving_)
       for (int a = 0; a < 3; ++a) filter_->apply(out.beta_v[a]);
   }

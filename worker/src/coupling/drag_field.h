@@ -7,6 +7,8 @@
 //             with the same filter as ε_s (none for centroid deposition).
 // Uniform:    β = φ D(ε_g, |u_c|) per cell, no particles (Model A: β = ε_s D).
 //
+// The filter of β starts each step from that step's result of the previous
+// update (FilterWarmStart): β changes little between outer iterations.
 // f_p is computed in parallel (one slot per particle); the deposition is a
 // serial loop in particle order, so β is bitwise independent of the thread count.
 #pragma once
@@ -58,6 +60,7 @@ class ParticleDragField {
   std::vector<std::size_t> cell_;  // cell of each particle centre
   DragSettings settings_;
   std::optional<DiffusionFilter> filter_;  // built once: matrix and multigrid reused every update
+  FilterWarmStart beta_warm_;              // β's filter steps of the last update (βv̄: cold, saves memory)
   bool moving_ = false;            // some particle has a non-zero velocity
   std::vector<double> f_;          // f_p per particle
   FilterStats last_filter_;

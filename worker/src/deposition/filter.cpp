@@ -75,16 +75,27 @@ DiffusionFilter& DiffusionFilter::operator=(DiffusionFilter&&) noexcept = defaul
 const std::array<double, 3>& DiffusionFilter::nu() const { return impl_->nu; }
 bool DiffusionFilter::active() const { return impl_->active; }
 
-FilterStats DiffusionFilter::apply(std::vector<double>& field) {
+FilterStats DiffusionFilter::apply(std::vector<double>& field) { return apply_steps(field, nullptr); }
+
+FilterStats DiffusionFilter::apply(std::vector<double>& field, FilterWarmStart& warm) {
+  return apply_steps(field, &warm);
+}
+
+FilterStats DiffusionFilter::apply_steps(std::vector<double>& field, FilterWarmStart* warm) {
   Impl& m = *impl_;
   FilterStats stats;
   stats.nu = m.nu;
   if (!m.active) return stats;
   const LinearSolverSettings linear{m.s.tolerance, m.s.max_iterations};
+  const bool warm_ok =
+      warm && warm->steps.size() == std::size_t(m.steps) && warm->steps.front().size() == field.size();
+  if (warm && !warm_ok) warm->steps.assign(std::size_t(m.steps), {});
   for (int step = 0; step < m.steps; ++step) {
-    m.system->b = field;  // α^n; `field` is also the initial guess for α^{n+1}
+    m.system->b = field;  // α^n; the initial guess for α^{n+1} is α^n or the warm start
+    if (warm_ok) field = warm->steps[std::size_t(step)];
     const LinearSolveStats solve = m.solver.solve(field, linear);
     const double residual = filter_detail::remove_mean_residual(*m.system, field);
+    if (warm) warm->steps[std::size_t(step)] = field;
     ++stats.steps;
     stats.total_iterations += solve.iterations;
     stats.worst_final_residual = std::max(stats.worst_final_residual, residual);

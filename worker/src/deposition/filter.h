@@ -46,6 +46,15 @@ std::array<double, 3> filter_diffusivity(const Grid& grid, const FilterSettings&
 // Filters `field` (one value per cell, Grid::index order) in place.
 FilterStats apply_filter(const Grid& grid, const FilterSettings& s, std::vector<double>& field);
 
+// The previous result of every backward-Euler step of one field, the initial
+// guesses of its next filtering (warm start). A field that changes little
+// between calls (β over the outer iterations) then costs a few iterations
+// per step; the answer still meets the tolerance ||r|| ≤ tol·||α^n|| of
+// each step, so only the round-off-sized result differs from a cold start.
+struct FilterWarmStart {
+  std::vector<std::vector<double>> steps;  // empty until the first apply()
+};
+
 // The same filter for several fields on one grid: the step matrix and the
 // solver's multigrid hierarchy are built once, in the constructor, and reused
 // by every apply() (e.g. ε_s, β and the three components of βv̄ each outer
@@ -58,10 +67,14 @@ class DiffusionFilter {
   DiffusionFilter& operator=(DiffusionFilter&&) noexcept;
 
   FilterStats apply(std::vector<double>& field);
+  // As apply(), starting each step from `warm` (when it holds one result per
+  // step of this grid) and leaving this call's step results in it.
+  FilterStats apply(std::vector<double>& field, FilterWarmStart& warm);
   const std::array<double, 3>& nu() const;
   bool active() const;  // false when no axis diffuses: apply() is then a no-op
 
  private:
+  FilterStats apply_steps(std::vector<double>& field, FilterWarmStart* warm);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -53,6 +53,8 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
                                                                  : nullptr;
   Stencil7& eq = sys.eq;
   if (d.size() != lay.size()) d = FaceField(g, a, 0.0);
+  sys.row_residual.resize(lay.size());
+  sys.row_scale.resize(lay.size());
   auto nb = neighbour_arrays(eq);
   const long faces = static_cast<long>(lay.size());
 
@@ -67,6 +69,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
       eq.ap[P] = 1.0;
       eq.b[P] = u[P];
       d[P] = 0.0;
+      sys.row_residual[P] = sys.row_scale[P] = 0.0;
       continue;
     }
     // Cells L (low) and R (high) of the face; a missing one is a ghost.
@@ -76,7 +79,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
     xl[a] = fa == 0 ? g.n[a] - 1 : fa - 1;
     if (fa == g.n[a]) xr[a] = g.n[a] - 1;  // unused when !hasR
 
-    double sum_nb = 0, net_out = 0, ap_fold = 0, b = 0, sum_matrix_nb = 0;
+    double sum_nb = 0, net_out = 0, ap_fold = 0, b = 0, sum_matrix_nb = 0, nb_flux = 0;
     for (int bd = 0; bd < 3; ++bd) {
       const FaceLayout& lb = mass_flux[bd].layout;
       for (int side = 0; side < 2; ++side) {
@@ -124,6 +127,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
           } else {
             (*nb[bd][side])[P] = anb;
             sum_matrix_nb += anb;
+            nb_flux += anb * u[N];
           }
         }
         // Deferred correction: −F_out (φ_TVD − φ_FOU) of the previous iterate.
@@ -156,6 +160,8 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
     b += V * state.beta_v_face[a][P];
     if (source) b += V * (*source)[P];
     const double ap = sum_nb + net_out + ap_fold + V * state.beta_face[a][P];
+    sys.row_residual[P] = b + nb_flux - ap * u[P];
+    sys.row_scale[P] = std::abs(ap * u[P]);
 
     // Relaxation (the residual b + Σ a_nb φ_nb − a_P φ_P at the current
     // iterate is the same before and after it) and the SIMPLEC coefficient.
@@ -167,27 +173,11 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
   }
 
   // Residual sums in a fixed order (independent of the thread count).
-  auto row_residual = [&](std::size_t P) {
-    const std::array<int, 3> x = face_coords(lay, P);
-    double r = eq.b[P] - eq.ap[P] * u[P];
-    for (int bd = 0; bd < 3; ++bd)
-      for (int side = 0; side < 2; ++side) {
-        const double c = (*nb[bd][side])[P];
-        if (c != 0.0) r += c * u[lay.index(*step(g, lay, x, bd, side == 0 ? -1 : 1))];
-      }
-    return r;
-  };
-  sys.residual = deterministic_sum(lay.size(), [&](std::size_t P) { return std::abs(row_residual(P)); });
-  sys.residual_l2 = std::sqrt(deterministic_sum(lay.size(), [&](std::size_t P) {
-    const double r = row_residual(P);
-    return r * r;
-  }));
-  sys.rhs_l2 = std::sqrt(deterministic_sum(lay.size(), [&](std::size_t P) { return eq.b[P] * eq.b[P]; }));
-  sys.scale = deterministic_sum(lay.size(), [&](std::size_t P) {
-    return face_role(g, problem.bc, a, face_coords(lay, P)[a]) == FaceRole::kFixed
-               ? 0.0
-               : std::abs(relax * eq.ap[P] * u[P]);
-  });
+  const std::vector<double>& r = sys.row_residual;
+  sys.residual = deterministic_sum(r.size(), [&](std::size_t P) { return std::abs(r[P]); });
+  sys.residual_l2 = std::sqrt(deterministic_sum(r.size(), [&](std::size_t P) { return r[P] * r[P]; }));
+  sys.rhs_l2 = std::sqrt(deterministic_sum(r.size(), [&](std::size_t P) { return eq.b[P] * eq.b[P]; }));
+  sys.scale = deterministic_sum(r.size(), [&](std::size_t P) { return sys.row_scale[P]; });
 }
 
 }  // namespace gridfree

@@ -1,9 +1,10 @@
 // Normalized residuals of the outer iterations.
 //
 //   continuity  R_c = Σ_cells |net mass outflow − S_m V| / M_ref,
-//               M_ref = Σ inflow mass flux through the boundaries (ρ U0 A);
-//               with no inflow, the mean |F| through one cross-section of the
-//               most-crossed axis, Σ_faces |F_a| / n_a;
+//               M_ref = Σ_faces |F| over every face of the grid: about the
+//               summed throughput of the cells, so R_c is a cell's mean
+//               relative mass imbalance and does not grow with the cell
+//               count (docs/SOLVER.md, "Steady criterion");
 //   momentum    R_m = Σ_components Σ_faces |b + Σ a_nb φ_nb − a_P φ_P|
 //                     / Σ_components Σ_faces |a_P φ_P|,
 //               evaluated at the iterate entering the outer iteration.
@@ -15,7 +16,7 @@
 namespace gridfree {
 
 // M_ref of the continuity residual, g/s (> 0 unless nothing flows).
-double continuity_reference(const FlowProblem& problem, const FaceVector& mass_flux);
+double continuity_reference(const FaceVector& mass_flux);
 
 // numerator / denominator with 0/0 = 0 and x/0 = x.
 inline double normalized(double numerator, double denominator) {

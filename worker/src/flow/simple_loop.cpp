@@ -2,11 +2,13 @@
 #include "flow/simple_loop.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <memory>
 #include <sstream>
 
+#include "flow/iterative_error.h"
 #include "flow/mass_flux.h"
 #include "flow/momentum.h"
 #include "flow/pressure_correction.h"
@@ -38,6 +40,19 @@ struct Workspace {
   FaceVector d;  // SIMPLEC coefficients
 };
 
+// Adds the seconds since the last call (or construction) to a total.
+class PhaseClock {
+ public:
+  void charge(double& total) {
+    const auto now = std::chrono::steady_clock::now();
+    total += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 }  // namespace
 
 SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& settings,
@@ -59,9 +74,12 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     IterationReport report;
     report.iteration = it;
 
+    PhaseClock clock;
     // 1. Drag from the current velocity field.
-    if (drag && ((it - 1) % std::max(1, settings.drag_interval) == 0)) drag(state, state.drag);
+    const bool drag_fresh = !drag || (it - 1) % std::max(1, settings.drag_interval) == 0;
+    if (drag && drag_fresh) drag(state, state.drag);
     update_drag_faces(problem, state);
+    clock.charge(out.seconds.drag);
 
     // 2. Momentum predictor: u* for each component with lagged mass fluxes.
     compute_mass_fluxes(problem, state, ws->mass_flux);
@@ -81,6 +99,7 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
       report.momentum_iterations += st.iterations;
       if (!st.converged) out.linear_failures = true;
     }
+    clock.charge(out.seconds.momentum);
 
     // 3. Pressure correction: p ← p + α_p p', u ← u* + d ∇p'.
     const PressureCorrectionResult pc =
@@ -88,15 +107,17 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
                        ws->pressure_solver, ws->p_prime);
     report.pressure_iterations = pc.solve.iterations;
     if (!pc.solve.converged) out.linear_failures = true;
+    clock.charge(out.seconds.pressure);
 
     // 4. Monitor: residuals, quantity of interest, status.
-    report.continuity = normalized(pc.imbalance, continuity_reference(problem, ws->mass_flux));
+    report.continuity = normalized(pc.imbalance, continuity_reference(ws->mass_flux));
     report.momentum = normalized(momentum_residual, momentum_scale);
     if (qoi) {
       report.qoi = qoi(state);
       qoi_history.push_back(*report.qoi);
-      if (static_cast<int>(qoi_history.size()) > settings.qoi_window + 1) qoi_history.pop_front();
-      const double oldest = qoi_history.front();
+      if (static_cast<int>(qoi_history.size()) > 2 * settings.qoi_window + 1) qoi_history.pop_front();
+      const std::size_t back = std::min(qoi_history.size() - 1, std::size_t(settings.qoi_window));
+      const double oldest = qoi_history[qoi_history.size() - 1 - back];
       report.qoi_change = qoi_history.size() > 1
                               ? normalized(std::abs(*report.qoi - oldest), std::abs(*report.qoi))
                               : 1.0;
@@ -111,6 +132,7 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     out.momentum = report.momentum;
     out.qoi = report.qoi;
     out.qoi_change = report.qoi_change;
+    if (qoi) out.qoi_iterative_error = geometric_iterative_error(qoi_history, settings.qoi_window);
     if (on_iteration) on_iteration(report);
 
     const bool bad = !finite(report.continuity) || !finite(report.momentum) ||
@@ -124,7 +146,9 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
       return out;
     }
     const double tol = settings.steady_tolerance;
-    if (it >= settings.min_iterations && report.continuity < tol && report.momentum < tol &&
+    // Steady only in an iteration that updated the drag: its β comes from
+    // the iterate it started from, as with an update every iteration.
+    if (it >= settings.min_iterations && drag_fresh && report.continuity < tol && report.momentum < tol &&
         (!qoi || report.qoi_change < tol)) {
       out.status = SolveStatus::kConverged;
       return out;

@@ -140,6 +140,10 @@ JobResult solve_with_particles(const JobSpec& job, const ParticleSet& particles,
   result.mass_imbalance = bf.in > 0 ? std::abs(bf.in - bf.out) / bf.in : 0.0;
   if (!std::isfinite(result.mass_imbalance)) result.mass_imbalance = 0.0;
   result.extra["timing"]["iterations_s"] = t_iterations;
+  result.extra["timing"]["drag_s"] = out.seconds.drag;
+  result.extra["timing"]["momentum_s"] = out.seconds.momentum;
+  result.extra["timing"]["pressure_s"] = out.seconds.pressure;
+  if (out.qoi_iterative_error) result.extra["dp_star_iterative_error"] = *out.qoi_iterative_error;
   result.extra["settings"] = {{"algorithm", "SIMPLEC"},
                               {"relax_u", settings.relax_u},
                               {"relax_p", settings.relax_p},
