@@ -79,7 +79,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
     xl[a] = fa == 0 ? g.n[a] - 1 : fa - 1;
     if (fa == g.n[a]) xr[a] = g.n[a] - 1;  // unused when !hasR
 
-    double sum_nb = 0, net_out = 0, ap_fold = 0, b = 0, sum_matrix_nb = 0, nb_flux = 0;
+    double sum_nb = 0, net_out = 0, ap_fold = 0, b = 0, sum_matrix_nb = 0, sum_nb_phi = 0;
     for (int bd = 0; bd < 3; ++bd) {
       const FaceLayout& lb = mass_flux[bd].layout;
       for (int side = 0; side < 2; ++side) {
@@ -127,7 +127,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
           } else {
             (*nb[bd][side])[P] = anb;
             sum_matrix_nb += anb;
-            nb_flux += anb * u[N];
+            sum_nb_phi += anb * u[N];
           }
         }
         // Deferred correction: −F_out (φ_TVD − φ_FOU) of the previous iterate.
@@ -160,7 +160,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
     b += V * state.beta_v_face[a][P];
     if (source) b += V * (*source)[P];
     const double ap = sum_nb + net_out + ap_fold + V * state.beta_face[a][P];
-    sys.row_residual[P] = b + nb_flux - ap * u[P];
+    sys.row_residual[P] = b + sum_nb_phi - ap * u[P];
     sys.row_scale[P] = std::abs(ap * u[P]);
 
     // Relaxation (the residual b + Σ a_nb φ_nb − a_P φ_P at the current
