@@ -2,6 +2,8 @@
 // computed here by hand: one particle's volume over one cell, β = φ D.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "coupling/drag_field.h"
@@ -82,6 +84,45 @@ TEST(DragField, OneParticleDepositsItsDragCoefficientInItsCell) {
     EXPECT_DOUBLE_EQ(out.beta[i], i == c ? f : 0.0);
     EXPECT_DOUBLE_EQ(out.beta_v[1][i], i == c ? f * 1.0 : 0.0);
   }
+}
+
+TEST(DragField, FilteredBetaVIsVTimesBetaWhenEveryParticleMovesAlike) {
+  // The filter is linear, so with one velocity v for every particle
+  // filter(Σ f_p v / V) = v filter(Σ f_p / V): β (warm-started after the first
+  // update) and βv̄ (filtered cold) must agree to the filter tolerance.
+  Grid g;
+  g.n = {8, 8, 8};
+  g.length = {0.08, 0.08, 0.08};
+  g.periodic = {true, false, true};
+  const DragSettings s{DragLaw::kBvk, 0.005, 1e-3, 2e-4};
+  const std::array<double, 3> v{0.5, -2.0, 1.0};
+  std::vector<Particle> ps;
+  for (int i = 0; i < 40; ++i) {
+    const double t = 0.61803398875 * i - std::floor(0.61803398875 * i);  // spread over the box
+    ps.push_back({0.004 + 0.072 * t, 0.004 + 0.0018 * i, 0.004 + 0.072 * (1 - t), 0.005, v[0], v[1], v[2]});
+  }
+  FilterSettings filter;
+  filter.fwhm_cm = 0.03;
+  filter.tolerance = 1e-12;
+  ParticleDragField field(g, ps, s, filter);
+  std::vector<double> eps(g.cells(), 0.9);
+  std::array<std::vector<double>, 3> u{std::vector<double>(g.cells(), 0.1),
+                                       std::vector<double>(g.cells(), 3.0),
+                                       std::vector<double>(g.cells(), 0.0)};
+  for (int update = 0; update < 2; ++update) {
+    if (update == 1) u[1].assign(g.cells(), 3.3);  // a changed flow: β's filter starts warm
+    DragField out;
+    field.compute(eps, u, out);
+    double beta_max = 0;
+    for (double b : out.beta) beta_max = std::max(beta_max, b);
+    ASSERT_GT(beta_max, 0.0);
+    for (int a = 0; a < 3; ++a) {
+      ASSERT_EQ(out.beta_v[a].size(), g.cells());
+      for (std::size_t c = 0; c < g.cells(); ++c)
+        EXPECT_NEAR(out.beta_v[a][c], v[a] * out.beta[c], 1e-10 * beta_max) << "update " << update;
+    }
+  }
+  EXPECT_EQ(field.updates(), 2);
 }
 
 }  // namespace
