@@ -19,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scratch_dir.h"
+
 extern char** environ;
 
 namespace {
@@ -28,12 +30,7 @@ const fs::path kSource = GRIDFREE_SOURCE_DIR;
 const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
 const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
 
-fs::path temp_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("gridfree_cli_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path temp_dir(const std::string& name) { return gridfree::test_support::fresh_scratch_dir("cli_test", name); }
 
 // Single-quoted for the shell ('\'' inside).
 std::string quote(const std::string& s) {

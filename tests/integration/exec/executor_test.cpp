@@ -15,6 +15,7 @@
 
 #include "exec/local_executor.h"
 #include "exec/slurm_executor.h"
+#include "scratch_dir.h"
 
 namespace gridfree {
 namespace {
@@ -22,12 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kFake = fs::path(GRIDFREE_SOURCE_DIR) / "tests/fixtures/fake_worker.sh";
 
-fs::path temp_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("gridfree_exec_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path temp_dir(const std::string& name) { return test_support::fresh_scratch_dir("exec_test", name); }
 
 JobLaunch launch(const fs::path& root, long long id, const std::string& mode, double timeout = 0) {
   const nlohmann::json doc = {{"case", {{"name", mode}, {"domain_dp", {30, 200, 10}}}},

@@ -13,18 +13,14 @@
 #include "sched/scheduler.h"
 #include "sched/series_finish.h"
 #include "store/owner.h"
+#include "scratch_dir.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("gridfree_sched_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path temp_dir(const std::string& name) { return test_support::fresh_scratch_dir("sched_test", name); }
 
 // Finishes jobs in start order; what each does comes from "mode" in its job.json.
 class FakeExecutor : public Executor {

@@ -11,6 +11,7 @@
 #include "store/owner.h"
 #include "store/schema.h"
 #include "store/store.h"
+#include "scratch_dir.h"
 
 namespace gridfree {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_db(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("gridfree_store_test_" + std::to_string(::getpid()));
+  const auto& dir = test_support::scratch_root("store_test");
   fs::create_directories(dir);
   const auto db = dir / (name + ".sqlite");
   fs::remove(db);
