@@ -14,29 +14,18 @@
 
 #include <gtest/gtest.h>
 
+#include "run_command.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct WorkerRun {
-  int exit_code = -1;
-  std::string out, err;
-};
+using WorkerRun = gridfree::test_support::CommandRun;
 
-// Runs gridfree-worker with `args`; stdout captured, stderr to a file.
+// Runs gridfree-worker with `args`; stdout captured, stderr through a file in `dir`.
 WorkerRun run_worker(const std::string& args, const fs::path& dir) {
-  const fs::path err_file = dir / "stderr.txt";
-  const std::string cmd = std::string(GRIDFREE_BIN_DIR) + "/gridfree-worker " + args + " 2>" + err_file.string();
-  WorkerRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe) != nullptr) r.out += buf.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
-  return r;
+  return gridfree::test_support::run_command(std::string(GRIDFREE_BIN_DIR) + "/gridfree-worker " + args,
+                                             dir / "stderr.txt");
 }
 
 std::string slurp(const fs::path& file) {

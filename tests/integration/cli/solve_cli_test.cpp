@@ -14,38 +14,22 @@
 
 #include <nlohmann/json.hpp>
 
+#include "contract_job.h"
+#include "run_command.h"
+#include "scratch_dir.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 const fs::path kWorker = fs::path(GRIDFREE_BIN_DIR) / "gridfree-worker";
 
+// The CONTRACT.md job on `cells` with `deposition` and a 2000-iteration cap.
 nlohmann::json baseline_job(const std::string& deposition, const std::array<int, 3>& cells) {
-  nlohmann::json job = nlohmann::json::parse(R"({
-    "schema": "gridfree/job/1",
-    "case": {
-      "name": "PC1",
-      "domain_dp": [30, 200, 10],
-      "particle_diameter_cm": 0.01,
-      "gas": {"density_g_cm3": 1e-3, "viscosity_g_cm_s": 2e-4},
-      "gravity_cm_s2": [0, 0, 0],
-      "boundaries": {
-        "x": "periodic", "z": "periodic",
-        "y_low":  {"type": "mass_inflow", "superficial_velocity_cm_s": 20.0},
-        "y_high": {"type": "pressure_outflow", "pressure_dyn_cm2": 0.0}
-      },
-      "particles": {"generator": {"kind": "bursting_bubble", "seed": 1}},
-      "probes": {"pressure_drop": {"y1_dp": 4, "y2_dp": 104}}
-    },
-    "numerics": {
-      "convection": "superbee",
-      "drag": "bvk",
-      "tolerances": {"linear": 1e-8, "filter": 1e-10, "steady": 1e-5},
-      "max_iterations": 2000
-    }
-  })");
+  nlohmann::json job = gridfree::test::contract_job();
   job["numerics"]["grid"] = {{"cells", cells}};
   job["numerics"]["deposition"] = {{"kind", deposition}, {"fwhm_dp", 6}};
+  job["numerics"]["max_iterations"] = 2000;
   return job;
 }
 
@@ -54,24 +38,13 @@ struct Outcome {
   std::string output;  // stdout + stderr
 };
 
-Outcome run_worker(const std::string& args) {
-  Outcome r;
-  const std::string cmd = kWorker.string() + " solve " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) r.output += buf;
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+// gridfree-worker solve `args`, run in `dir` (stderr kept there).
+Outcome run_worker(const std::string& args, const fs::path& dir) {
+  const auto r = gridfree::test_support::run_command(kWorker.string() + " solve " + args, dir / "stderr.txt");
+  return {r.exit_code, r.out + r.err};
 }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("gridfree_solve_cli_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return gridfree::test_support::fresh_scratch_dir("solve_cli", name); }
 
 void write(const fs::path& p, const nlohmann::json& j) { std::ofstream(p) << j.dump(2); }
 
@@ -84,7 +57,8 @@ TEST(SolveCli, BaselineAtDeltaStar2ConvergesAndWritesEveryField) {
   const fs::path dir = scratch("baseline");
   write(dir / "job.json", baseline_job("diffusion", {15, 100, 5}));
   const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " --vtk " +
-                    (dir / "vtk").string() + " --threads 2 -q");
+                    (dir / "vtk").string() + " --threads 2 -q",
+                              dir);
   const std::string cmd_note = "output:\n" + r.output;
   ASSERT_EQ(r.exit_code, 0) << cmd_note;
   const nlohmann::json res = read(dir / "result.json");
@@ -113,7 +87,6 @@ TEST(SolveCli, BaselineAtDeltaStar2ConvergesAndWritesEveryField) {
   std::string first;
   std::getline(vtk, first);
   EXPECT_EQ(first.rfind("# vtk DataFile", 0), 0u);
-  fs::remove_all(dir);
 }
 
 TEST(SolveCli, ResultGoesToStdoutWithoutOutputFile) {
@@ -121,17 +94,16 @@ TEST(SolveCli, ResultGoesToStdoutWithoutOutputFile) {
   nlohmann::json job = baseline_job("diffusion", {3, 20, 1});
   job["case"]["particles"] = {{"uniform", {{"solids_fraction", 0.3}}}};
   write(dir / "job.json", job);
-  const Outcome r = run_worker((dir / "job.json").string() + " -q");
+  const Outcome r = run_worker((dir / "job.json").string() + " -q", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json res = nlohmann::json::parse(r.output);
   EXPECT_EQ(res["status"], "converged");
-  fs::remove_all(dir);
 }
 
 TEST(SolveCli, CentroidDepositionFailsBelowDeltaStarOne) {
   const fs::path dir = scratch("centroid");
   write(dir / "job.json", baseline_job("centroid", {60, 400, 20}));  // Δ* = 0.5
-  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q");
+  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q", dir);
   ASSERT_EQ(r.exit_code, 3) << r.output;
   const nlohmann::json res = read(dir / "result.json");
   EXPECT_EQ(res["status"], "failed");
@@ -139,7 +111,6 @@ TEST(SolveCli, CentroidDepositionFailsBelowDeltaStarOne) {
   EXPECT_NE(reason.find("solids fraction"), std::string::npos) << reason;
   EXPECT_NE(reason.find("diffusion deposition"), std::string::npos) << reason;
   EXPECT_TRUE(!res.contains("srq") || !res["srq"].contains("dp_star") || res["srq"]["dp_star"].is_null());
-  fs::remove_all(dir);
 }
 
 TEST(SolveCli, JobWithoutGridIsInvalidInputAndWritesNothing) {
@@ -147,15 +118,14 @@ TEST(SolveCli, JobWithoutGridIsInvalidInputAndWritesNothing) {
   nlohmann::json job = baseline_job("diffusion", {15, 100, 5});
   job["numerics"].erase("grid");
   write(dir / "job.json", job);
-  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string());
+  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string(), dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("grid"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "result.json"));
-  fs::remove_all(dir);
 }
 
 TEST(SolveCli, MissingJobFileIsInvalidInput) {
-  const Outcome r = run_worker("/nonexistent/job.json -q");
+  const Outcome r = run_worker("/nonexistent/job.json -q", scratch("missing"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
 }
 

@@ -11,7 +11,7 @@
 #include "job/case_grid.h"
 #include "job/job_spec.h"
 #include "job/particles_spec.h"
-#include "job_fixture.h"
+#include "contract_job.h"
 
 namespace gridfree {
 namespace {

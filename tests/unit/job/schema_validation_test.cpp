@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "core/schema_validation.h"
-#include "job_fixture.h"
+#include "contract_job.h"
 
 namespace gridfree {
 namespace {

@@ -1,0 +1,36 @@
+// Runs a shell command for the CLI tests: exit code, stdout, stderr.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace gridfree::test_support {
+
+struct CommandRun {
+  int exit_code = -1;  // -1: could not start, or ended by a signal
+  std::string out;     // stdout
+  std::string err;     // stderr
+};
+
+// `command` through /bin/sh; stderr goes through `stderr_file` (overwritten).
+inline CommandRun run_command(const std::string& command, const std::filesystem::path& stderr_file) {
+  CommandRun r;
+  const std::string cmd = command + " 2>'" + stderr_file.string() + "'";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.out += buf.data();
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(stderr_file);
+  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  return r;
+}
+
+}  // namespace gridfree::test_support
