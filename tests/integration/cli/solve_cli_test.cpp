@@ -100,6 +100,20 @@ TEST(SolveCli, ResultGoesToStdoutWithoutOutputFile) {
   EXPECT_EQ(res["status"], "converged");
 }
 
+TEST(SolveCli, IterationCapExitsThreeWithNotConvergedAndTheReason) {
+  const fs::path dir = scratch("capped");
+  nlohmann::json job = baseline_job("diffusion", {15, 100, 5});
+  job["numerics"]["max_iterations"] = 2;
+  write(dir / "job.json", job);
+  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q", dir);
+  ASSERT_EQ(r.exit_code, 3) << r.output;
+  const nlohmann::json res = read(dir / "result.json");
+  EXPECT_EQ(res["status"], "not_converged");
+  EXPECT_EQ(res["iterations"], 2);
+  EXPECT_NE(res["reason"].get<std::string>().find("not converged after 2 iterations"), std::string::npos)
+      << res["reason"];
+}
+
 TEST(SolveCli, CentroidDepositionFailsBelowDeltaStarOne) {
   const fs::path dir = scratch("centroid");
   write(dir / "job.json", baseline_job("centroid", {60, 400, 20}));  // Δ* = 0.5
