@@ -11,29 +11,12 @@
 #include <string>
 
 #include "flow/solve.h"
+#include "uniform_bed_job.h"
 
 namespace gridfree {
 namespace {
 
-JobSpec uniform_bed() {
-  JobSpec job;
-  CaseSpec& c = job.case_spec;
-  c.name = "uniform";
-  c.domain_dp = {10, 120, 10};
-  c.particle_diameter_cm = 0.01;
-  c.gas = {1e-3, 2e-4};
-  c.boundaries[0] = {BoundarySpec{BoundaryKind::kPeriodic}, BoundarySpec{BoundaryKind::kPeriodic}};
-  c.boundaries[2] = c.boundaries[0];
-  c.boundaries[1][0] = {BoundaryKind::kMassInflow, 20.0, 0};
-  c.boundaries[1][1] = {BoundaryKind::kPressureOutflow, 0, 0};
-  c.particles = UniformSpec{0.3};
-  c.probes = {20, 100};
-  job.numerics.cells = {4, 60, 4};
-  job.numerics.convection = Limiter::kSuperbee;
-  job.numerics.drag = DragLaw::kBvk;
-  job.numerics.max_iterations = 2000;
-  return job;
-}
+JobSpec uniform_bed() { return test_support::uniform_bed_job(0.3, 20.0, DragLaw::kBvk); }
 
 TEST(HonestFailure, IterationCapGivesNotConvergedWithTheResidualsInTheReason) {
   JobSpec job = uniform_bed();

@@ -13,28 +13,14 @@
 
 #include "drag/drag_law.h"
 #include "flow/solve.h"
+#include "uniform_bed_job.h"
 
 namespace gridfree {
 namespace {
 
 JobSpec uniform_bed(double phi, double u0, DragLaw law) {
-  JobSpec job;
-  CaseSpec& c = job.case_spec;
-  c.name = "uniform";
-  c.domain_dp = {10, 120, 10};
-  c.particle_diameter_cm = 0.01;
-  c.gas = {1e-3, 2e-4};
-  c.boundaries[0] = {BoundarySpec{BoundaryKind::kPeriodic}, BoundarySpec{BoundaryKind::kPeriodic}};
-  c.boundaries[2] = c.boundaries[0];
-  c.boundaries[1][0] = {BoundaryKind::kMassInflow, u0, 0};
-  c.boundaries[1][1] = {BoundaryKind::kPressureOutflow, 0, 0};
-  c.particles = UniformSpec{phi};
-  c.probes = {20, 100};
-  job.numerics.cells = {4, 60, 4};
-  job.numerics.convection = Limiter::kSuperbee;
-  job.numerics.drag = law;
+  JobSpec job = test_support::uniform_bed_job(phi, u0, law);
   job.numerics.tolerances.steady = 1e-7;
-  job.numerics.max_iterations = 2000;
   return job;
 }
 
