@@ -38,8 +38,9 @@ struct SimpleSettings {
   int qoi_window = 10;
   // Outer iterations between drag updates. β depends on the velocity only
   // through the slip Reynolds number; updating it every 4th iteration left
-  // the iteration count and dp_star (to 1e-9) unchanged on the bursting
-  // bubble and SSCP-like beds and cuts the filter's cost 4× (docs/SOLVER.md).
+  // the iteration count (±5) and dp_star (within 5e-8) unchanged on the
+  // bursting bubble and SSCP-like beds and cuts the filter's cost 4×
+  // (docs/SOLVER.md).
   int drag_interval = 4;
   double blowup = 1e6;
 };
