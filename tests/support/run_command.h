@@ -1,4 +1,5 @@
-// Runs a shell command for the CLI tests: exit code, stdout, stderr.
+// Runs a shell command or one of the project's executables for the CLI
+// tests: exit code, stdout, stderr.
 #pragma once
 
 #include <sys/wait.h>
@@ -31,6 +32,13 @@ inline CommandRun run_command(const std::string& command, const std::filesystem:
   std::ifstream e(stderr_file);
   r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
   return r;
+}
+
+// The project's executable `name` (in GRIDFREE_BIN_DIR, which every test is
+// compiled with) run with `args`; stderr kept in dir/stderr.txt.
+inline CommandRun run_executable(const std::string& name, const std::string& args,
+                                 const std::filesystem::path& dir) {
+  return run_command(std::string(GRIDFREE_BIN_DIR) + "/" + name + " " + args, dir / "stderr.txt");
 }
 
 }  // namespace gridfree::test_support

@@ -20,12 +20,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using CliRun = gridfree::test_support::CommandRun;
+using gridfree::test_support::CommandRun;
 
-// Runs gridfree with `args`; stdout captured, stderr through a file in `dir`.
-CliRun run_gridfree(const std::string& args, const fs::path& dir) {
-  return gridfree::test_support::run_command(std::string(GRIDFREE_BIN_DIR) + "/gridfree " + args,
-                                             dir / "stderr.txt");
+CommandRun run_gridfree(const std::string& args, const fs::path& dir) {
+  return gridfree::test_support::run_executable("gridfree", args, dir);
 }
 
 class ExtrapolateCli : public ::testing::Test {
@@ -49,7 +47,7 @@ const char* kJsonSeries = R"({"h": [0.5, 1, 2, 4, 8], "f": [2.25, 2.5, 3, 4, 6]}
 const char* kCsvSeries = "h,f\n8,6\n4,4\n2,3\n1,2.5\n0.5,2.25\n";
 
 TEST_F(ExtrapolateCli, JsonSeriesPrintsTheContractJson) {
-  const CliRun r = run_gridfree("extrapolate " + write("s.json", kJsonSeries).string(), dir_);
+  const CommandRun r = run_gridfree("extrapolate " + write("s.json", kJsonSeries).string(), dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["status"], "ok");
@@ -62,20 +60,20 @@ TEST_F(ExtrapolateCli, JsonSeriesPrintsTheContractJson) {
 }
 
 TEST_F(ExtrapolateCli, CsvSeriesGivesTheSameAnswer) {
-  const CliRun a = run_gridfree("extrapolate " + write("s.json", kJsonSeries).string(), dir_);
-  const CliRun b = run_gridfree("extrapolate " + write("s.csv", kCsvSeries).string(), dir_);
+  const CommandRun a = run_gridfree("extrapolate " + write("s.json", kJsonSeries).string(), dir_);
+  const CommandRun b = run_gridfree("extrapolate " + write("s.csv", kCsvSeries).string(), dir_);
   ASSERT_EQ(b.exit_code, 0) << b.err;
   EXPECT_EQ(nlohmann::json::parse(a.out), nlohmann::json::parse(b.out));
 }
 
 TEST_F(ExtrapolateCli, MethodAndPRangeOptions) {
   const auto file = write("s.json", kJsonSeries).string();
-  const CliRun eh = run_gridfree("extrapolate " + file + " --method eh14", dir_);
+  const CommandRun eh = run_gridfree("extrapolate " + file + " --method eh14", dir_);
   ASSERT_EQ(eh.exit_code, 0) << eh.err;
   const auto j = nlohmann::json::parse(eh.out);
   EXPECT_EQ(j["method"].get<std::string>().rfind("eh14_power", 0), 0u);
   EXPECT_TRUE(j.contains("eh14"));
-  const CliRun narrow = run_gridfree("extrapolate " + file + " --p-range 1.5 2", dir_);
+  const CommandRun narrow = run_gridfree("extrapolate " + file + " --p-range 1.5 2", dir_);
   ASSERT_EQ(narrow.exit_code, 0) << narrow.err;
   EXPECT_EQ(nlohmann::json::parse(narrow.out)["method"], "mixed");  // p = 1 not accepted
 }
@@ -89,7 +87,7 @@ TEST_F(ExtrapolateCli, InvalidInputExitsTwo) {
                         Case{"neg.json", R"({"h": [1, -2, 3, 4], "f": [1, 2, 3, 4]})", "/h/1"},
                         Case{"short.json", R"({"h": [1, 2, 3], "f": [1, 2]})", "/f"},
                         Case{"broken.json", R"({"h": [1, 2)", "invalid JSON"}}) {
-    const CliRun r = run_gridfree("extrapolate " + write(c.name, c.text).string(), dir_);
+    const CommandRun r = run_gridfree("extrapolate " + write(c.name, c.text).string(), dir_);
     EXPECT_EQ(r.exit_code, 2) << c.name;
     EXPECT_NE(r.err.find(c.expect_in_stderr), std::string::npos) << c.name << ": " << r.err;
     EXPECT_TRUE(r.out.empty()) << c.name;

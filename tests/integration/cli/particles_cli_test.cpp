@@ -20,12 +20,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using WorkerRun = gridfree::test_support::CommandRun;
+using gridfree::test_support::CommandRun;
 
-// Runs gridfree-worker with `args`; stdout captured, stderr through a file in `dir`.
-WorkerRun run_worker(const std::string& args, const fs::path& dir) {
-  return gridfree::test_support::run_command(std::string(GRIDFREE_BIN_DIR) + "/gridfree-worker " + args,
-                                             dir / "stderr.txt");
+CommandRun run_worker(const std::string& args, const fs::path& dir) {
+  return gridfree::test_support::run_executable("gridfree-worker", args, dir);
 }
 
 std::string slurp(const fs::path& file) {
@@ -53,7 +51,7 @@ class ParticlesCli : public ::testing::Test {
     std::ofstream(dir_ / name) << text;
     return dir_ / name;
   }
-  WorkerRun particles(const fs::path& spec, const fs::path& out) {
+  CommandRun particles(const fs::path& spec, const fs::path& out) {
     return run_worker("particles " + spec.string() + " -o " + out.string(), dir_);
   }
   fs::path dir_;
@@ -62,7 +60,7 @@ class ParticlesCli : public ::testing::Test {
 TEST_F(ParticlesCli, GeneratesTheBurstingBubble) {
   const auto spec = write("pc1.json", R"({"domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
                                           "generator": {"kind": "bursting_bubble", "seed": 1}})");
-  const WorkerRun r = particles(spec, dir_ / "pc1.csv");
+  const CommandRun r = particles(spec, dir_ / "pc1.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = slurp(dir_ / "pc1.csv");
   EXPECT_EQ(csv.rfind("x,y,z,d\n", 0), 0u);
@@ -86,7 +84,7 @@ TEST_F(ParticlesCli, ConvertsAnMfixFile) {
   write("particle_input.dat", "0.15 0.25 0.35 0.05 2.5\n0.45 0.55 0.65 0.05 2.5\n");
   const auto spec = write("convert.json", R"({"domain_dp": [10, 10, 10], "particle_diameter_cm": 0.1,
                                               "file": "particle_input.dat", "format": "mfix"})");
-  const WorkerRun r = particles(spec, dir_ / "converted.csv");
+  const CommandRun r = particles(spec, dir_ / "converted.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(slurp(dir_ / "converted.csv"), "x,y,z,d\n0.14999999999999999,0.25,0.34999999999999998,0.10000000000000001\n"
                                            "0.45000000000000001,0.55000000000000004,0.65000000000000002,0.10000000000000001\n");
@@ -95,7 +93,7 @@ TEST_F(ParticlesCli, ConvertsAnMfixFile) {
 TEST_F(ParticlesCli, UnknownGeneratorKindExits2) {
   const auto spec = write("bad.json", R"({"domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
                                           "generator": {"kind": "bursting", "seed": 1}})");
-  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  const CommandRun r = particles(spec, dir_ / "out.csv");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("/generator/kind"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "out.csv"));
@@ -104,7 +102,7 @@ TEST_F(ParticlesCli, UnknownGeneratorKindExits2) {
 TEST_F(ParticlesCli, NegativeDomainExits2) {
   const auto spec = write("bad.json", R"({"domain_dp": [-30, 200, 10], "particle_diameter_cm": 0.01,
                                           "generator": {"kind": "bursting_bubble", "seed": 1}})");
-  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  const CommandRun r = particles(spec, dir_ / "out.csv");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("/domain_dp/0"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "out.csv"));
@@ -115,7 +113,7 @@ TEST_F(ParticlesCli, ErrorsLeaveAnExistingOutputUntouched) {
   write("bed.csv", "x,y,z,d\n0.5,0.5,0.5,0.1\n0.5,0.55,0.5,0.1\n");  // overlapping pair
   const auto spec = write("convert.json", R"({"domain_dp": [10, 10, 10], "particle_diameter_cm": 0.1,
                                               "file": "bed.csv", "format": "csv"})");
-  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  const CommandRun r = particles(spec, dir_ / "out.csv");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bed.csv:3"), std::string::npos) << r.err;
   EXPECT_EQ(slurp(dir_ / "out.csv"), "previous\n");
@@ -123,7 +121,7 @@ TEST_F(ParticlesCli, ErrorsLeaveAnExistingOutputUntouched) {
 
 TEST_F(ParticlesCli, MalformedJsonNamesLineAndColumn) {
   const auto spec = write("broken.json", "{\"domain_dp\": [30, 200, 10],\n \"particle_diameter_cm\": ,\n}");
-  const WorkerRun r = particles(spec, dir_ / "out.csv");
+  const CommandRun r = particles(spec, dir_ / "out.csv");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("broken.json:2:"), std::string::npos) << r.err;
 }

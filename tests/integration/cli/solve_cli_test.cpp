@@ -22,8 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kWorker = fs::path(GRIDFREE_BIN_DIR) / "gridfree-worker";
-
 // The CONTRACT.md job on `cells` with `deposition` and a 2000-iteration cap.
 nlohmann::json baseline_job(const std::string& deposition, const std::array<int, 3>& cells) {
   nlohmann::json job = gridfree::test::contract_job();
@@ -40,7 +38,7 @@ struct Outcome {
 
 // gridfree-worker solve `args`, run in `dir` (stderr kept there).
 Outcome run_worker(const std::string& args, const fs::path& dir) {
-  const auto r = gridfree::test_support::run_command(kWorker.string() + " solve " + args, dir / "stderr.txt");
+  const auto r = gridfree::test_support::run_executable("gridfree-worker", "solve " + args, dir);
   return {r.exit_code, r.out + r.err};
 }
 

@@ -11,7 +11,6 @@
 #pragma once
 
 #include "flow/fields.h"
-#include "flow/flow_state.h"
 
 namespace gridfree {
 
