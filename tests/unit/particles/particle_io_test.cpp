@@ -218,7 +218,7 @@ TEST_F(ParticleFiles, CheckParticlesNamesFileLines) {
 TEST_F(ParticleFiles, LoadParticlesFromEachSource) {
   CaseSpec c = cube_case(1.0);
   write("bed.csv", "x,y,z,d\n0.5,0.5,0.5,0.1\n");
-  c.particles = FileSpec{dir_ / "bed.csv", "csv"};
+  c.particles = FileSpec{dir_ / "bed.csv", "csv", "", std::nullopt};
   c.particle_velocity = {2.0, 9};
   const ParticleSet set = load_particles(c.particles, c);
   ASSERT_EQ(set.particles.size(), 1u);

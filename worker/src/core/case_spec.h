@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -36,7 +37,10 @@ struct GeneratorSpec {
 };
 struct FileSpec {
   std::filesystem::path path;  // resolved against the job/study file's folder
-  std::string format;          // "csv" | "mfix"
+  std::string format;          // "csv" | "mfix" | "lammps"
+  // LAMMPS dumps only: the unit system ("si" | "cgs") and the snapshot's timestep.
+  std::string units;
+  std::optional<std::int64_t> timestep;
 };
 struct UniformSpec {
   double solids_fraction = 0;

@@ -74,6 +74,28 @@ CaseBoundaries parse_boundaries(const nlohmann::json& obj, const std::string& wh
   return b;
 }
 
+// `units` (required) and `timestep` (optional) belong to LAMMPS dumps only:
+// CSV and MFiX files are in cm and hold one configuration.
+void parse_lammps_options(const nlohmann::json& obj, FileSpec& f, const std::string& where, ProblemList& problems) {
+  const bool lammps = f.format == "lammps";
+  for (const char* key : {"units", "timestep"})
+    if (obj.contains(key) && !lammps && !f.format.empty())
+      problems.add(child_pointer(where, key), "applies to format lammps only (" + f.format + " files are in cm and hold one configuration)");
+  if (!lammps) return;
+  if (!obj.contains("units")) {
+    problems.add(where.empty() ? "/" : where, "a lammps dump needs \"units\": \"si\" (lengths in m) or \"cgs\" (cm)");
+  } else {
+    f.units = read_string(obj, "units", where, problems);
+    if (!f.units.empty() && f.units != "si" && f.units != "cgs")
+      problems.add(child_pointer(where, "units"), "'" + f.units + "' is not one of si, cgs");
+  }
+  if (obj.contains("timestep")) {
+    const nlohmann::json& t = obj.at("timestep");
+    if (t.is_number_integer() && t.get<std::int64_t>() >= 0) f.timestep = t.get<std::int64_t>();
+    else problems.add(child_pointer(where, "timestep"), "must be a whole number >= 0");
+  }
+}
+
 ParticleSource parse_particle_source(const nlohmann::json& obj, const std::string& where,
                                      const std::filesystem::path& base_dir, ProblemList& problems) {
   const int given = obj.contains("generator") + obj.contains("file") + obj.contains("uniform");
@@ -92,8 +114,9 @@ ParticleSource parse_particle_source(const nlohmann::json& obj, const std::strin
     FileSpec f;
     const std::string name = read_string(obj, "file", where, problems);
     f.format = read_string(obj, "format", where, problems);
-    if (!f.format.empty() && f.format != "csv" && f.format != "mfix")
-      problems.add(child_pointer(where, "format"), "'" + f.format + "' is not one of csv, mfix");
+    if (!f.format.empty() && f.format != "csv" && f.format != "mfix" && f.format != "lammps")
+      problems.add(child_pointer(where, "format"), "'" + f.format + "' is not one of csv, mfix, lammps");
+    parse_lammps_options(obj, f, where, problems);
     if (!name.empty()) {
       f.path = std::filesystem::path(name);
       if (f.path.is_relative()) f.path = base_dir / f.path;

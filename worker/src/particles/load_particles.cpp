@@ -1,11 +1,36 @@
 // A case's particles from its source (generator, file or uniform bed).
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <type_traits>
 
 #include "particles/particle_io.h"
 
 namespace gridfree {
+namespace {
+
+LammpsOptions lammps_options(const FileSpec& s) {
+  if (s.units != "si" && s.units != "cgs")
+    throw InputError(s.path.string(), "a lammps dump needs units si or cgs, got '" + s.units + "'");
+  return {s.units == "si" ? 100.0 : 1.0, s.timestep};
+}
+
+// A file that states its box must match the case's domain: a different
+// periodic length would change the physics silently.
+void check_box(const ParticleSet& set, const std::array<double, 3>& domain_cm) {
+  if (!set.box_cm) return;
+  for (int a = 0; a < 3; ++a) {
+    const double box = (*set.box_cm)[std::size_t(a)], domain = domain_cm[std::size_t(a)];
+    if (std::abs(box - domain) > 1e-6 * domain) {
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "the box is %.9g cm along %c but the case's domain is %.9g cm (domain_dp x diameter)",
+                    box, "xyz"[a], domain);
+      throw InputError(set.source, buf);
+    }
+  }
+}
+
+}  // namespace
 
 GeneratedParticles load_particles_with_report(const ParticleSource& source, const CaseSpec& case_spec) {
   GeneratedParticles out;
@@ -19,7 +44,9 @@ GeneratedParticles load_particles_with_report(const ParticleSource& source, cons
         } else if constexpr (std::is_same_v<T, FileSpec>) {
           if (s.format == "csv") out.set = read_csv(s.path);
           else if (s.format == "mfix") out.set = read_mfix(s.path);
-          else throw InputError(s.path.string(), "unknown particle file format '" + s.format + "' (csv or mfix)");
+          else if (s.format == "lammps") out.set = read_lammps_dump(s.path, lammps_options(s));
+          else throw InputError(s.path.string(), "unknown particle file format '" + s.format + "' (csv, mfix or lammps)");
+          check_box(out.set, L);
           check_particles(out.set, case_spec);
           double solids = 0;
           for (const Particle& p : out.set.particles) solids += std::numbers::pi * p.d * p.d * p.d / 6.0;

@@ -1,6 +1,8 @@
 // A frozen particle: centre (cm), diameter (cm), velocity (cm/s).
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,8 @@ struct ParticleSet {
   // generated) and, per particle, its 1-based line in that file.
   std::string source;
   std::vector<int> source_lines;
+  // The simulation box's edge lengths (cm) when the file states one (LAMMPS dumps).
+  std::optional<std::array<double, 3>> box_cm;
 };
 
 }  // namespace gridfree

@@ -13,10 +13,16 @@
 //     [default]" for Coordinates, Phase_ID, Diameter, Density, Velocity, ...),
 //     data from line 35: x y z [phase] [diameter] [density] [u v w] [...].
 //     Only 3-D files are accepted; columns after the velocity are ignored.
+// LAMMPS / LIGGGHTS text dump (`dump custom`): the snapshot at a chosen
+// timestep (default: the last in the file); columns by the ATOMS header
+// (x y z | xu yu zu | xs ys zs, radius | diameter, optional vx vy vz);
+// positions relative to the box's low corner; lengths converted to cm.
 // Every error names "file:line".
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 
 #include "core/case_spec.h"
 #include "particles/generators.h"
@@ -31,6 +37,12 @@ ParticleSet read_mfix(const std::filesystem::path& path);
 // Version-1 format, 8 columns (velocities zero when the set has none).
 void write_mfix(const std::filesystem::path& path, const ParticleSet& set, double density_g_cm3 = 1.0);
 
+struct LammpsOptions {
+  double length_unit_cm = 1;            // 100 for LAMMPS `units si`, 1 for `units cgs`
+  std::optional<std::int64_t> timestep; // the snapshot to read; the last one when unset
+};
+ParticleSet read_lammps_dump(const std::filesystem::path& path, const LammpsOptions& options);
+
 struct ParticleCheckOptions {
   // Allowed overlap as a fraction of the contact distance r_i + r_j:
   // snapshots of soft-sphere DEM runs carry small overlaps.
@@ -43,7 +55,7 @@ struct ParticleCheckOptions {
 // named "file:line" when the set came from a file, else "particle[i]".
 void check_particles(const ParticleSet& set, const CaseSpec& case_spec, const ParticleCheckOptions& options = {});
 
-// The case's particles: generated, read (format "csv" | "mfix") and
+// The case's particles: generated, read (format "csv" | "mfix" | "lammps") and
 // checked, or none for a uniform (continuum) bed; then the case's thermal
 // velocities when thermal_cm_s > 0.
 ParticleSet load_particles(const ParticleSource& source, const CaseSpec& case_spec);
