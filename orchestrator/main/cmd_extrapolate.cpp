@@ -2,7 +2,7 @@
 //
 // Applies the extrapolation of PHYSICS.md §8 to any series a user brings
 // ({"h": [...], "f": [...]} or a CSV with columns h,f) and prints the JSON of
-// CONTRACT.md §4 (2-space indent) on stdout. Exit 0 on success, 2 on invalid
+// docs/INTERFACE.md §4 (2-space indent) on stdout. Exit 0 on success, 2 on invalid
 // input (the message names the file position or JSON path and why).
 #include <iostream>
 #include <memory>

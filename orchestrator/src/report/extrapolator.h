@@ -1,6 +1,6 @@
 // The seam between the report and the extrapolation library: a function
 // from a series' converged grids (h = Δ*, f = dp_star) to the contract's
-// extrapolation JSON (CONTRACT.md §4). The report calls the library through
+// extrapolation JSON (docs/INTERFACE.md §4). The report calls the library through
 // this, so tests can hand it any JSON of that shape.
 #pragma once
 

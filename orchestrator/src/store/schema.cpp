@@ -1,4 +1,4 @@
-// Schema version 1. Status words (CONTRACT.md §5):
+// Schema version 1. Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),

@@ -1,4 +1,4 @@
-// The database schema (CONTRACT.md §5 plus bookkeeping columns) and its
+// The database schema (docs/INTERFACE.md §5 plus bookkeeping columns) and its
 // migrations, keyed by PRAGMA user_version.
 #pragma once
 

@@ -5,7 +5,7 @@
 //                 each factor varied alone from it: 1 + Σ_f (levels_f − 1)
 //                 series (cases count as a factor). No duplicates.
 // Grids: cells = round(L*/Δ*) per direction (cells_for_delta_star) per case,
-// or the explicit cells. Each job document is CONTRACT.md §2's job with the
+// or the explicit cells. Each job document is docs/INTERFACE.md §2's job with the
 // study's numerics merged in, identified by job_hash.
 #include <cmath>
 #include <set>

@@ -1,5 +1,5 @@
 // parse_study: a study file → Study, after the schema (schemas/study.schema.json)
-// and the semantic checks of CONTRACT.md §3/§4. Every problem is collected
+// and the semantic checks of docs/INTERFACE.md §3/§4. Every problem is collected
 // with its JSON pointer before one InputError is thrown.
 #include <algorithm>
 #include <cmath>

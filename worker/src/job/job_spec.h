@@ -1,4 +1,4 @@
-// A worker job (CONTRACT.md §2, schemas/job.schema.json) as typed values.
+// A worker job (docs/INTERFACE.md §2, schemas/job.schema.json) as typed values.
 //
 // parse_job() validates a JSON document against the embedded schema and the
 // semantic rules (probes inside the domain, positive sizes, known names, ...)
