@@ -70,6 +70,7 @@ struct StudyJob {
   std::size_t grid = 0;            // index of the grid in the study's list
   std::array<int, 3> cells{};
   double delta_star = 0;           // (V/N)^(1/3)/d of this grid, actual
+  std::optional<double> delta_star_nominal;  // as requested in grids.delta_star (none for cells)
   nlohmann::json doc;              // the job document
   std::string hash;                // job_hash(doc)
 };

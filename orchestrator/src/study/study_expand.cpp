@@ -99,6 +99,7 @@ ExpandedStudy expand(const Study& s) {
       job.grid = g;
       job.cells = grids[g];
       job.delta_star = delta_star_of(c->spec.domain_dp, grids[g]);
+      if (!s.grid_delta_star.empty()) job.delta_star_nominal = s.grid_delta_star[g];
       job.doc = make_job_document(s, key, grids[g]);
       job.hash = job_hash(job.doc);
       if (hashes.insert(job.hash).second) out.jobs.push_back(std::move(job));
