@@ -18,6 +18,7 @@ using Extrapolator =
 struct ExtrapolatorSettings {
   std::string method = "fm";        // fm (PHYSICS.md §8) | eh14
   double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
+  std::string weights = "inverse_h"; // inverse_h | uniform (fm fits)
 };
 
 // extrap/extrapolation.h's extrapolate(), returned as to_json(result).
