@@ -2,7 +2,7 @@
 //
 // Applies the extrapolation of PHYSICS.md §8 to any series a user brings
 // ({"h": [...], "f": [...]} or a CSV with columns h,f) and prints the JSON of
-// CONTRACT.md §4 (2-space indent) on stdout. Exit 0 on success, 2 on invalid
+// docs/INTERFACE.md §4 (2-space indent) on stdout. Exit 0 on success, 2 on invalid
 // input (the message names the file position or JSON path and why).
 #include <iostream>
 #include <memory>
@@ -48,7 +48,7 @@ int run_extrapolate(const ExtrapolateArgs& args) {
 void add_extrapolate_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ExtrapolateArgs>();
   auto* sub = app.add_subcommand(
-      "extrapolate", "Extrapolate a grid series to h -> 0 with uncertainties (PHYSICS.md §8); prints JSON");
+      "extrapolate", "Extrapolate a grid series to h -> 0 with uncertainties (docs/PHYSICS.md §8); prints JSON");
   sub->add_option("series", args->series_file, "SERIES.json ({\"h\": [...], \"f\": [...]}) or SERIES.csv (columns h,f)")
       ->required();
   sub->add_option("--method", args->method, "fm (Fullmer & Musser 2018, default) or eh14 (Eca & Hoekstra 2014)")

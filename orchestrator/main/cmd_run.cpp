@@ -1,4 +1,5 @@
 // gridfree run | submit | daemon: put a study in the database and work the queue.
+//   --replace (run, submit): a changed study under a stored name replaces it
 //   run     = validate + submit + schedule that study until done + report
 //   submit  = validate + submit (a daemon or a later run does the work)
 //   daemon  = schedule every queued study until SIGINT/SIGTERM
@@ -24,10 +25,16 @@ struct RunOptions {
   std::string executor = "local";
   double timeout_s = 0;
   std::string out;
+  bool replace = false;
 };
 
-SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy& ex) {
-  const SubmitResult r = store.submit(study, ex);
+SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy& ex, bool replace) {
+  const SubmitResult r = store.submit(study, ex, replace);
+  if (r.replaced) {
+    spdlog::info("'{}': the stored definition was replaced; {} job(s) no study needs any more removed", study.name,
+                 r.jobs_removed.size());
+    remove_run_folders(store.file(), r.jobs_removed);
+  }
   if (r.created)
     spdlog::info("submitted '{}': {} series, {} jobs ({} new, {} already done)", study.name, ex.series.size(),
                  r.jobs_total, r.jobs_new, r.jobs_reused);
@@ -44,7 +51,7 @@ int run_study(const RunOptions& ro) {
   auto executor = make_executor(ro.executor, ro.db);
   // 2. Submit (or resume).
   Store store(ro.db, true);
-  const SubmitResult sub = submit_study(store, study, ex);
+  const SubmitResult sub = submit_study(store, study, ex, ro.replace);
   recover_stale_jobs(store);
   // 3. Work the study until it is done.
   StopSignals signals;
@@ -78,6 +85,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
   sub->add_option("--executor", ro->executor, "local | slurm")->capture_default_str();
   sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (0 = none)");
   sub->add_option("--out", ro->out, "report folder (default reports/<study>)");
+  sub->add_flag("--replace", ro->replace,
+                "replace a stored study of the same name whose definition differs (finished jobs are reused)");
   sub->callback([ro, &exit_code] { exit_code = run_study(*ro); });
 }
 
@@ -85,13 +94,16 @@ void add_submit_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("submit", "validate a study and queue its jobs");
   auto file = std::make_shared<std::string>();
   auto db = std::make_shared<std::string>(kDefaultDb);
+  auto replace = std::make_shared<bool>(false);
   sub->add_option("STUDY", *file, "study JSON file")->required();
   sub->add_option("--db", *db, "SQLite database")->capture_default_str();
-  sub->callback([file, db, &exit_code] {
+  sub->add_flag("--replace", *replace,
+                "replace a stored study of the same name whose definition differs (finished jobs are reused)");
+  sub->callback([file, db, replace, &exit_code] {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     Store store(*db, true);
-    const SubmitResult r = submit_study(store, study, ex);
+    const SubmitResult r = submit_study(store, study, ex, *replace);
     std::cout << (r.created ? "submitted " : "already submitted ") << study.name << ": " << ex.series.size()
               << " series, " << r.jobs_total << " jobs\n";
     exit_code = to_int(ExitCode::kOk);

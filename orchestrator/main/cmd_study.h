@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -23,6 +24,10 @@ void add_daemon_command(CLI::App& app, int& exit_code);
 void add_status_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_cancel_command(CLI::App& app, int& exit_code);
+void add_delete_command(CLI::App& app, int& exit_code);
+
+// Removes the run folders (<db>.runs/<job_hash>) of jobs the store removed.
+void remove_run_folders(const std::filesystem::path& db, const std::vector<std::string>& job_hashes);
 
 inline constexpr const char* kDefaultDb = "gridfree.sqlite";
 

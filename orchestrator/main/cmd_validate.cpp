@@ -4,9 +4,17 @@
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
+#include "study/grid_listing.h"
 #include "study/study_plan.h"
 
 namespace gridfree::cli {
+namespace {
+
+void warn_close_grids(const std::vector<std::string>& warnings) {
+  for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
+}
+
+}  // namespace
 
 void add_validate_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("validate", "check a study file: every problem with its JSON path");
@@ -15,6 +23,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
   sub->callback([file, &exit_code] {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
+    warn_close_grids(neighbour_warnings(grid_listing(study)));
     std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
@@ -32,10 +41,18 @@ void add_plan_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
-    if (*json)
-      std::cout << plan_to_json(plan).dump(2) << '\n';
-    else
-      std::cout << "study " << study.name << ": " << study.design_description() << "\n" << plan_to_table(plan);
+    const auto grids = grid_listing(study);
+    const auto warnings = neighbour_warnings(grids);
+    if (*json) {
+      auto j = plan_to_json(plan);
+      j["grids"] = grid_listing_json(grids);
+      j["warnings"] = warnings;
+      std::cout << j.dump(2) << '\n';
+    } else {
+      std::cout << "study " << study.name << ": " << study.design_description() << "\n" << plan_to_table(plan)
+                << "\n" << grid_listing_table(grids);
+    }
+    warn_close_grids(warnings);
     exit_code = to_int(ExitCode::kOk);
   });
 }

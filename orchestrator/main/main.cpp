@@ -1,4 +1,4 @@
-// gridfree: studies -> jobs -> worker pool -> SQLite -> reports (CONTRACT.md §3-§5).
+// gridfree: studies -> jobs -> worker pool -> SQLite -> reports (docs/INTERFACE.md §3-§5).
 // main parses, runs one subcommand, and maps the outcome to an exit code.
 #include <exception>
 #include <iostream>

@@ -1,4 +1,4 @@
-// The job of CONTRACT.md §2 (the paper's PC1 baseline), for the job tests.
+// The job of docs/INTERFACE.md §2 (the paper's PC1 baseline), for the job tests.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // gridfree-worker particles SPEC.json -o FILE.csv
 //
 // Generates a seeded configuration or converts a particle file (e.g. MFiX
-// particle_input.dat → CSV), CONTRACT.md §2. The spec is validated first;
+// particle_input.dat → CSV), docs/INTERFACE.md §2. The spec is validated first;
 // any problem exits 2 naming its JSON path and nothing is written. The
 // output is written to a temporary file beside FILE and renamed over it, so
 // FILE is either the complete new configuration or untouched.

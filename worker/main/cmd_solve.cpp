@@ -2,7 +2,7 @@
 //
 // Parses the job (relative paths against the job file's folder), solves it,
 // and writes the result JSON atomically (temporary file + rename; stdout
-// without -o). Exit codes (CONTRACT.md §2): 0 converged; 3 not converged,
+// without -o). Exit codes (docs/INTERFACE.md §2): 0 converged; 3 not converged,
 // diverged or failed deposition (result written, with the reason); 2 invalid
 // input (nothing written); 1 internal error.
 #include <malloc.h>

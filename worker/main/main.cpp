@@ -1,4 +1,4 @@
-// gridfree-worker: solves one frozen-bed case on one grid (CONTRACT.md §2).
+// gridfree-worker: solves one frozen-bed case on one grid (docs/INTERFACE.md §2).
 // main parses, runs one subcommand, and maps the outcome to an exit code.
 #include <exception>
 #include <iostream>

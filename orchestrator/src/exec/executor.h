@@ -48,7 +48,7 @@ class Executor {
   virtual std::string external_id(long long job_id) const = 0;
 };
 
-// The worker command line (CONTRACT.md §2) for a run directory.
+// The worker command line (docs/INTERFACE.md §2) for a run directory.
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
                                         int threads);
 

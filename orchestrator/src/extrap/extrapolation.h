@@ -8,7 +8,7 @@
 //   n < 4            : status "insufficient_grids" (no fits, no uncertainty)
 //   always           : data_range (n ≥ 2) and the GCI triplets (n ≥ 3)
 //
-// JSON (CONTRACT.md §4): to_json gives status, method, f0, p, sigma_re,
+// JSON (docs/INTERFACE.md §4): to_json gives status, method, f0, p, sigma_re,
 // data_range, fs, fits.power{f0,p,c,sigma,p_found}, fits.mixed{f0,c1,c2,sigma},
 // grids[{h,f,fhat,u,rde}] (h ascending), gci[{h:[3],p,f_ext,gci_fine,
 // convergence,status}] (finest first), plus sigma_over_range, n_grids, notes,
@@ -41,6 +41,6 @@ void validate_options(const ExtrapolationOptions& opts);
 ExtrapolationMethod parse_method(const std::string& name, const std::string& where);
 
 nlohmann::json to_json(const ExtrapolationResult& r);
-nlohmann::ordered_json to_ordered_json(const ExtrapolationResult& r);  // keys in CONTRACT order
+nlohmann::ordered_json to_ordered_json(const ExtrapolationResult& r);  // keys in the order of docs/INTERFACE.md
 
 }  // namespace gridfree

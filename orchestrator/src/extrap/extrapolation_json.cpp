@@ -1,4 +1,4 @@
-// JSON form of an ExtrapolationResult, CONTRACT.md §4 (see extrapolation.h).
+// JSON form of an ExtrapolationResult, docs/INTERFACE.md §4 (see extrapolation.h).
 // Empty optionals and non-finite numbers become null.
 #include <cmath>
 #include <optional>

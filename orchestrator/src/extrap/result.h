@@ -1,4 +1,4 @@
-// Options and result of extrapolating one series (PHYSICS.md §8, CONTRACT.md §4).
+// Options and result of extrapolating one series (PHYSICS.md §8, docs/INTERFACE.md §4).
 // Numbers that cannot be computed are empty optionals (JSON null).
 #pragma once
 

@@ -1,4 +1,4 @@
-// Reading a series from the files users bring (CONTRACT.md §4, `gridfree
+// Reading a series from the files users bring (docs/INTERFACE.md §4, `gridfree
 // extrapolate`): JSON {"h": [...], "f": [...]} or CSV with a header row
 // naming the columns h and f (other columns are ignored, '#' starts a comment
 // line). The result is validated and sorted by make_series.

@@ -1,5 +1,5 @@
 // The report's view of one series' extrapolation, read from the JSON form
-// of the extrapolation result (CONTRACT.md §4, `gridfree extrapolate`):
+// of the extrapolation result (docs/INTERFACE.md §4, `gridfree extrapolate`):
 //
 //   {"status", "method", "f0", "p", "sigma_re", "data_range", "fs",
 //    "fits": {"power": {f0, p, c, sigma, p_found}, "mixed": {f0, c1, c2, sigma}},

@@ -14,6 +14,7 @@ Extrapolator library_extrapolator(const ExtrapolatorSettings& settings) {
     options.method = parse_method(settings.method, "/extrapolation/method");
     options.p_low = settings.p_low;
     options.p_high = settings.p_high;
+    options.weights = settings.weights == "uniform" ? Weighting::kUniform : Weighting::kInverseH;
     validate_options(options);
     return to_json(extrapolate(h, f, options));
   };

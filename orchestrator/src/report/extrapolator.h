@@ -1,6 +1,6 @@
 // The seam between the report and the extrapolation library: a function
 // from a series' converged grids (h = Δ*, f = dp_star) to the contract's
-// extrapolation JSON (CONTRACT.md §4). The report calls the library through
+// extrapolation JSON (docs/INTERFACE.md §4). The report calls the library through
 // this, so tests can hand it any JSON of that shape.
 #pragma once
 
@@ -18,6 +18,7 @@ using Extrapolator =
 struct ExtrapolatorSettings {
   std::string method = "fm";        // fm (PHYSICS.md §8) | eh14
   double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
+  std::string weights = "inverse_h"; // inverse_h | uniform (fm fits)
 };
 
 // extrap/extrapolation.h's extrapolate(), returned as to_json(result).

@@ -205,7 +205,7 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
 
 std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series) {
   std::vector<NamedChart> out;
-  out.push_back({"fig2_rde.svg", "RDE of every grid of every series (PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
+  out.push_back({"fig2_rde.svg", "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
                  rde_chart(series)});
   out.push_back({"speed_accuracy.svg",
                  "CPU time against error for every converged job: the cheapest grid that meets a target error is the leftmost-lowest point under it.",

@@ -23,7 +23,7 @@ struct JobOutcome {
   ResultRow row;
 };
 
-// Reads <run_dir>/result.json (CONTRACT.md §2). Throws std::runtime_error
+// Reads <run_dir>/result.json (docs/INTERFACE.md §2). Throws std::runtime_error
 // with the reason when it is missing or not a valid result document.
 ResultRow read_result_file(const std::filesystem::path& file);
 

@@ -61,6 +61,15 @@ ProgressCounts counts(Store& store, const SchedulerOptions& o) {
   return c;
 }
 
+// The per-job limit of a study's own "timeout_s" (0 = none); --timeout of
+// run/daemon, when given, overrides it.
+double study_timeout(Store& store, long long study_id) {
+  const nlohmann::json d = store.study_definition(study_id);
+  if (!d.is_object()) return 0;
+  const auto t = d.find("timeout_s");
+  return t != d.end() && t->is_number() ? t->get<double>() : 0;
+}
+
 }  // namespace
 
 int recover_stale_jobs(Store& store) {
@@ -115,7 +124,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
       launch.threads = o.threads_per_job;
-      launch.timeout_s = o.timeout_s;
+      launch.timeout_s = o.timeout_s > 0 ? o.timeout_s : study_timeout(store, job->study_id);
       try {
         launch.run_dir = prepare_run_dir(o.runs_root, job->job_hash, job->spec.dump(2));
       } catch (const std::exception& e) {

@@ -27,6 +27,7 @@ ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_
   if (!def.is_object() || !def.contains("extrapolation")) return s;
   const auto& e = def["extrapolation"];
   if (e.contains("method") && e["method"].is_string()) s.method = e["method"].get<std::string>();
+  if (e.contains("weights") && e["weights"].is_string()) s.weights = e["weights"].get<std::string>();
   if (e.contains("p_range") && e["p_range"].is_array() && e["p_range"].size() == 2) {
     s.p_low = e["p_range"][0].get<double>();
     s.p_high = e["p_range"][1].get<double>();

@@ -19,7 +19,7 @@ namespace gridfree {
 // Extrapolation settings of a stored study (its definition's "extrapolation").
 ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_id);
 
-// Splits the contract extrapolation JSON (CONTRACT.md §4) into rows; grids
+// Splits the contract extrapolation JSON (docs/INTERFACE.md §4) into rows; grids
 // are matched to jobs by h.
 void extrapolation_rows(const nlohmann::json& ex, const std::vector<SeriesPoint>& points,
                         std::vector<ExtrapolationRow>& fits, std::vector<UncertaintyRow>& uncertainties);

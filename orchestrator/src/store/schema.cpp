@@ -1,4 +1,4 @@
-// Schema version 1. Status words (CONTRACT.md §5):
+// Schema version 2 (step 1: the tables; step 2: nominal Δ*, v_series). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -140,6 +140,83 @@ LEFT JOIN results r ON r.job_id = j.id
 LEFT JOIN uncertainties u ON u.series_id = se.id AND u.job_id = j.id;
 )sql";
 
+// Step 2 — nominal Δ* and the per-series view (study conveniences): the
+// Δ* a study requested for each grid (NULL for explicit cells) beside the
+// actual one; uncertainties copy it from study_jobs on insert; v_series
+// puts f0, the method and the finest grid's U and RDE in one row.
+constexpr const char* kV2NominalDeltaStar = R"sql(
+ALTER TABLE study_jobs ADD COLUMN delta_star_nominal REAL;
+ALTER TABLE uncertainties ADD COLUMN delta_star_nominal REAL;
+CREATE TRIGGER uncertainties_nominal AFTER INSERT ON uncertainties
+BEGIN
+  UPDATE uncertainties SET delta_star_nominal =
+    (SELECT sj.delta_star_nominal FROM study_jobs sj WHERE sj.series_id = NEW.series_id AND sj.job_id = NEW.job_id)
+  WHERE series_id = NEW.series_id AND job_id = NEW.job_id;
+END;
+DROP VIEW v_results;
+CREATE VIEW v_results AS
+SELECT st.name        AS study,
+       se.id          AS series_id,
+       se.case_name   AS case_name,
+       se.convection  AS convection,
+       se.fwhm_dp     AS fwhm_dp,
+       se.drag        AS drag,
+       se.deposition  AS deposition,
+       sj.grid_index  AS grid_index,
+       j.id           AS job_id,
+       j.job_hash     AS job_hash,
+       j.status       AS job_status,
+       j.attempts     AS attempts,
+       COALESCE(r.delta_star, j.delta_star) AS delta_star,
+       sj.delta_star_nominal AS delta_star_nominal,
+       COALESCE(r.nx, j.nx) AS nx,
+       COALESCE(r.ny, j.ny) AS ny,
+       COALESCE(r.nz, j.nz) AS nz,
+       r.status       AS result_status,
+       r.dp_star      AS dp_star,
+       r.iterations   AS iterations,
+       r.wall_s       AS wall_s,
+       r.cpu_s        AS cpu_s,
+       r.peak_rss_mb  AS peak_rss_mb,
+       COALESCE(r.reason, j.error) AS reason,
+       u.u            AS u,
+       u.rde          AS rde
+FROM study_jobs sj
+JOIN studies st ON st.id = sj.study_id
+JOIN series se  ON se.id = sj.series_id
+JOIN jobs j     ON j.id = sj.job_id
+LEFT JOIN results r ON r.job_id = j.id
+LEFT JOIN uncertainties u ON u.series_id = se.id AND u.job_id = j.id;
+;
+CREATE VIEW v_series AS
+SELECT st.name        AS study,
+       se.id          AS series_id,
+       se.case_name   AS case_name,
+       se.convection  AS convection,
+       se.fwhm_dp     AS fwhm_dp,
+       se.drag        AS drag,
+       se.deposition  AS deposition,
+       se.status      AS series_status,
+       -- verdict: add the series' verdict column here (e.g. se.verdict AS verdict)
+       e.status       AS extrapolation_status,
+       e.method       AS method,
+       e.f0           AS f0,
+       e.p            AS p,
+       e.sigma_re     AS sigma_re,
+       e.fs           AS fs,
+       (SELECT COUNT(*) FROM uncertainties n WHERE n.series_id = se.id) AS ng,
+       fu.delta_star  AS finest_delta_star,
+       fu.delta_star_nominal AS finest_delta_star_nominal,
+       fu.f           AS finest_dp_star,
+       fu.u           AS finest_u,
+       fu.rde         AS finest_rde
+FROM series se
+JOIN studies st ON st.id = se.study_id
+LEFT JOIN extrapolations e ON e.series_id = se.id AND e.chosen = 1
+LEFT JOIN uncertainties fu ON fu.series_id = se.id AND fu.delta_star =
+  (SELECT MIN(m.delta_star) FROM uncertainties m WHERE m.series_id = se.id);
+)sql";
+
 }  // namespace
 
 int schema_version(Database& db) {
@@ -160,6 +237,7 @@ void migrate(Database& db) {
     throw SqliteError("database schema version " + std::to_string(v) + " is newer than this gridfree (" +
                           std::to_string(kSchemaVersion) + ")", SQLITE_ERROR);
   if (v < 1) db.exec(kV1);
+  if (v < 2) db.exec(kV2NominalDeltaStar);
   db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   tx.commit();
 }

@@ -1,4 +1,4 @@
-// The database schema (CONTRACT.md §5 plus bookkeeping columns) and its
+// The database schema (docs/INTERFACE.md §5 plus bookkeeping columns) and its
 // migrations, keyed by PRAGMA user_version.
 #pragma once
 
@@ -6,7 +6,7 @@
 
 namespace gridfree {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 
 // Brings the database up to kSchemaVersion (WAL mode, tables, view) in one
 // transaction per step. Refuses a database newer than this program.

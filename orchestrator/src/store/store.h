@@ -29,6 +29,8 @@ struct SubmitResult {
   std::size_t jobs_total = 0;
   std::size_t jobs_new = 0;      // inserted by this submit
   std::size_t jobs_reused = 0;   // already done in the store (any study)
+  bool replaced = false;         // a different stored definition was replaced (--replace)
+  std::vector<std::string> jobs_removed;  // hashes of jobs no study needs any more
 };
 
 struct ClaimedJob {
@@ -102,8 +104,18 @@ class Store {
 
   // Adds a study, its series and jobs in one transaction. The same name with
   // the same definition is a resume (no-op; a cancelled study is queued
-  // again); the same name with another definition throws InputError.
-  SubmitResult submit(const Study& study, const ExpandedStudy& expanded);
+  // again); the same name with another definition throws InputError unless
+  // `replace`: then the stored study is removed as by delete_study (in the
+  // same transaction) and the new one inserted; jobs both need, finished
+  // or not, are kept and linked again (job_hash).
+  SubmitResult submit(const Study& study, const ExpandedStudy& expanded, bool replace = false);
+
+  // Removes a study: its series, extrapolations, uncertainties, job links
+  // and events; then every job that no study links any more, with its
+  // result (jobs shared with other studies stay). Throws InputError while
+  // one of its jobs is running. Returns the removed jobs' hashes (their run
+  // folders can go too), or nullopt when there is no such study.
+  std::optional<std::vector<std::string>> delete_study(const std::string& name);
 
   std::optional<long long> study_id(const std::string& name);
   std::vector<long long> active_studies();      // queued | running, oldest first
@@ -158,6 +170,9 @@ class Store {
                  const std::string& kind, const std::string& message);
 
  private:
+  void remove_study_rows(long long study_id, const std::string& name);  // inside a transaction
+  std::vector<std::string> remove_orphan_jobs();                         // inside a transaction
+
   std::filesystem::path file_;
   Database db_;
 };

@@ -23,7 +23,7 @@ nlohmann::json Store::study_definition(long long id) {
   return nlohmann::json::parse(st.as_text(0));
 }
 
-SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded) {
+SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bool replace) {
   // Stored as JSON text; compared as JSON values (key order, 20 vs 20.0 do not matter).
   const std::string definition = study.definition.dump();
   SubmitResult out;
@@ -32,11 +32,19 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded) {
   {
     auto st = db_.prepare("SELECT id, definition_json, status FROM studies WHERE name = ?");
     st.bind_all(study.name);
-    if (st.step()) {
-      if (nlohmann::json::parse(st.as_text(1)) != study.definition)
-        throw InputError("/name", "a different study named '" + study.name +
-                                      "' is already in " + file_.filename().string() +
-                                      "; rename the study or use another --db");
+    const bool exists = st.step();
+    const bool changed = exists && nlohmann::json::parse(st.as_text(1)) != study.definition;
+    if (changed && !replace)
+      throw InputError("/name", "a different study named '" + study.name + "' is already in " +
+                                    file_.filename().string() +
+                                    "; run it with --replace to replace the stored one (finished jobs it "
+                                    "shares are reused), rename the study, or use another --db");
+    if (changed) {
+      const long long old_id = st.as_int(0);
+      st.reset();
+      remove_study_rows(old_id, study.name);
+      out.replaced = true;
+    } else if (exists) {
       out.study_id = st.as_int(0);
       const bool cancelled = st.as_text(2) == "cancelled";
       if (cancelled) {
@@ -79,7 +87,8 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded) {
   auto find_job = db_.prepare("SELECT id, status FROM jobs WHERE job_hash = ?");
   auto requeue = db_.prepare("UPDATE jobs SET status = 'queued', error = NULL WHERE id = ? AND status = 'cancelled'");
   auto link = db_.prepare(
-      "INSERT OR IGNORE INTO study_jobs(study_id, job_id, series_id, grid_index) VALUES (?, ?, ?, ?)");
+      "INSERT OR IGNORE INTO study_jobs(study_id, job_id, series_id, grid_index, delta_star_nominal) "
+      "VALUES (?, ?, ?, ?, ?)");
   for (const auto& job : expanded.jobs) {
     const long long cells = static_cast<long long>(job.cells[0]) * job.cells[1] * job.cells[2];
     ins_job.reset();
@@ -98,8 +107,10 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded) {
     requeue.reset();
     requeue.bind_all(job_id).run();
     link.reset();
-    link.bind_all(out.study_id, job_id, series_ids.at(job.series), static_cast<long long>(job.grid)).run();
+    link.bind_all(out.study_id, job_id, series_ids.at(job.series), static_cast<long long>(job.grid),
+                  job.delta_star_nominal).run();
   }
+  if (out.replaced) out.jobs_removed = remove_orphan_jobs();
   db_.prepare("INSERT INTO events(study_id, kind, message) VALUES (?, 'submit', ?)")
       .bind_all(out.study_id, std::to_string(out.jobs_total) + " jobs, " + std::to_string(out.jobs_new) +
                                   " new, " + std::to_string(out.jobs_reused) + " already done")

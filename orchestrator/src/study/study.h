@@ -1,10 +1,10 @@
-// A grid-convergence study (CONTRACT.md §3): cases × factor levels × grids.
+// A grid-convergence study (docs/INTERFACE.md §3): cases × factor levels × grids.
 //
 // parse_study() reads and validates a study file (schema + semantics, every
 // problem with its JSON pointer); expand() turns it into series and jobs.
 // A series is one (case, convection, fwhm_dp, drag, deposition) over all
 // grids; a job is one series on one grid: the full job document of
-// CONTRACT.md §2 and its job_hash.
+// docs/INTERFACE.md §2 and its job_hash.
 #pragma once
 
 #include <array>
@@ -70,6 +70,7 @@ struct StudyJob {
   std::size_t grid = 0;            // index of the grid in the study's list
   std::array<int, 3> cells{};
   double delta_star = 0;           // (V/N)^(1/3)/d of this grid, actual
+  std::optional<double> delta_star_nominal;  // as requested in grids.delta_star (none for cells)
   nlohmann::json doc;              // the job document
   std::string hash;                // job_hash(doc)
 };
@@ -93,7 +94,7 @@ std::vector<SeriesKey> design_series(const Study& study);
 // Cells of every grid of the study for one case.
 std::vector<std::array<int, 3>> grids_for_case(const Study& study, const StudyCase& c);
 
-// Builds one job document (CONTRACT.md §2) for a series on a grid.
+// Builds one job document (docs/INTERFACE.md §2) for a series on a grid.
 nlohmann::json make_job_document(const Study& study, const SeriesKey& key,
                                  const std::array<int, 3>& cells);
 

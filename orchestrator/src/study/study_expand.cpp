@@ -5,7 +5,7 @@
 //                 each factor varied alone from it: 1 + Σ_f (levels_f − 1)
 //                 series (cases count as a factor). No duplicates.
 // Grids: cells = round(L*/Δ*) per direction (cells_for_delta_star) per case,
-// or the explicit cells. Each job document is CONTRACT.md §2's job with the
+// or the explicit cells. Each job document is docs/INTERFACE.md §2's job with the
 // study's numerics merged in, identified by job_hash.
 #include <cmath>
 #include <set>
@@ -99,6 +99,7 @@ ExpandedStudy expand(const Study& s) {
       job.grid = g;
       job.cells = grids[g];
       job.delta_star = delta_star_of(c->spec.domain_dp, grids[g]);
+      if (!s.grid_delta_star.empty()) job.delta_star_nominal = s.grid_delta_star[g];
       job.doc = make_job_document(s, key, grids[g]);
       job.hash = job_hash(job.doc);
       if (hashes.insert(job.hash).second) out.jobs.push_back(std::move(job));

@@ -1,5 +1,5 @@
 // parse_study: a study file → Study, after the schema (schemas/study.schema.json)
-// and the semantic checks of CONTRACT.md §3/§4. Every problem is collected
+// and the semantic checks of docs/INTERFACE.md §3/§4. Every problem is collected
 // with its JSON pointer before one InputError is thrown.
 #include <algorithm>
 #include <cmath>
@@ -10,6 +10,7 @@
 #include "drag/drag_law.h"
 #include "job/job_spec.h"
 #include "schemes/limiter.h"
+#include "study/case_extends.h"
 #include "study/study.h"
 #include "study/study_plan.h"
 
@@ -167,20 +168,13 @@ void parse_factors(const json& doc, Study& s, ProblemList& problems) {
   }
 }
 
-// Numerics defaults for a factor not listed: the study's numerics, else the job defaults.
+// A factor left out has one level, its documented default (the paper's
+// baseline; docs/INTERFACE.md section 3): superbee, fwhm_dp 6, bvk, diffusion.
 void default_factors(Study& s) {
-  const json& n = s.numerics;
-  if (s.factors.convection.empty())
-    s.factors.convection = {n.contains("convection") && n["convection"].is_string()
-                                ? n["convection"].get<std::string>() : "superbee"};
-  if (s.factors.drag.empty())
-    s.factors.drag = {n.contains("drag") && n["drag"].is_string() ? n["drag"].get<std::string>() : "bvk"};
-  const json dep = n.contains("deposition") && n["deposition"].is_object() ? n["deposition"] : json::object();
-  if (s.factors.deposition.empty())
-    s.factors.deposition = {dep.contains("kind") && dep["kind"].is_string() ? dep["kind"].get<std::string>()
-                                                                           : "diffusion"};
-  if (s.factors.fwhm_dp.empty())
-    s.factors.fwhm_dp = {dep.contains("fwhm_dp") && is_number(dep["fwhm_dp"]) ? dep["fwhm_dp"].get<double>() : 6.0};
+  if (s.factors.convection.empty()) s.factors.convection = {"superbee"};
+  if (s.factors.drag.empty()) s.factors.drag = {"bvk"};
+  if (s.factors.deposition.empty()) s.factors.deposition = {"diffusion"};
+  if (s.factors.fwhm_dp.empty()) s.factors.fwhm_dp = {6.0};
 }
 
 template <class T>
@@ -395,13 +389,15 @@ void check_jobs(const Study& s, ProblemList& problems) {
 
 }  // namespace
 
-Study parse_study_document(const json& doc, const std::filesystem::path& base_dir) {
+Study parse_study_document(const json& given, const std::filesystem::path& base_dir) {
   ProblemList problems;
-  if (!doc.is_object()) throw InputError("", "a study must be a JSON object");
+  if (!given.is_object()) throw InputError("", "a study must be a JSON object");
+  // Cases that extend others are resolved first; the rest reads the result.
+  const json doc = resolve_case_extends(given, problems);
   problems.append(validate_against_schema(doc, "study.schema"));
 
   Study s;
-  s.definition = doc;
+  s.definition = given;
   s.base_dir = base_dir;
   if (auto n = doc.find("name"); n == doc.end() || !n->is_string() || n->get<std::string>().empty()) {
     add_once(problems, "/name", "a non-empty study name is required");

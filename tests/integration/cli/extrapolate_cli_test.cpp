@@ -1,5 +1,5 @@
 // `gridfree extrapolate` as users run it: a JSON and a CSV series in, the
-// CONTRACT.md §4 JSON out on stdout with exit 0; invalid input exits 2 with a
+// docs/INTERFACE.md §4 JSON out on stdout with exit 0; invalid input exits 2 with a
 // message on stderr naming the problem.
 #include <sys/wait.h>
 #include <unistd.h>

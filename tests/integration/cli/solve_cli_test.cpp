@@ -1,4 +1,4 @@
-// gridfree-worker solve, run as a process (CONTRACT.md §2): exit codes,
+// gridfree-worker solve, run as a process (docs/INTERFACE.md §2): exit codes,
 // the result document, --vtk, and the failure of centroid deposition on
 // cells smaller than a particle.
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The CONTRACT.md job on `cells` with `deposition` and a 2000-iteration cap.
+// The docs/INTERFACE.md job on `cells` with `deposition` and a 2000-iteration cap.
 nlohmann::json baseline_job(const std::string& deposition, const std::array<int, 3>& cells) {
   nlohmann::json job = gridfree::test::contract_job();
   job["numerics"]["grid"] = {{"cells", cells}};

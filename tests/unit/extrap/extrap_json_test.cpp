@@ -1,4 +1,4 @@
-// The JSON of CONTRACT.md §4: keys, nulls, ordering of grids and triplets.
+// The JSON of docs/INTERFACE.md §4: keys, nulls, ordering of grids and triplets.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -62,7 +62,7 @@ TEST(ExtrapJson, EqualsTheStructFieldForField) {
   EXPECT_EQ(j["fits"]["power"]["c"].get<double>(), *r.power->c);
   EXPECT_EQ(j["grids"][3]["u"].get<double>(), *r.grids[3].u);
   const auto oj = to_ordered_json(r);
-  EXPECT_EQ(oj.begin().key(), "status");  // CONTRACT order for people reading it
+  EXPECT_EQ(oj.begin().key(), "status");  // documented order for people reading it
   EXPECT_EQ(nlohmann::json(oj), j);
 }
 

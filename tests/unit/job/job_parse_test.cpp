@@ -85,7 +85,7 @@ TEST(ParseJob, DefaultsForOptionalFields) {
   EXPECT_EQ(job.case_spec.particle_velocity.thermal_cm_s, 0);
   EXPECT_EQ(job.case_spec.probes.y1_dp, 4);
   EXPECT_EQ(job.case_spec.probes.y2_dp, 104);
-  EXPECT_EQ(job.numerics.tolerances.linear, 1e-8);
+  EXPECT_EQ(job.numerics.tolerances.linear, 1e-2);
   EXPECT_EQ(job.numerics.tolerances.filter, 1e-10);
   EXPECT_EQ(job.numerics.tolerances.steady, 1e-5);
   EXPECT_EQ(job.numerics.max_iterations, 20000);

@@ -1,4 +1,4 @@
-// Tests of the adapter from the contract's extrapolation JSON (CONTRACT.md §4)
+// Tests of the adapter from the contract's extrapolation JSON (docs/INTERFACE.md §4)
 // to the report's ExtrapolationView.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 namespace gridfree {
 namespace {
 
-// The example printed by `gridfree extrapolate` in CONTRACT.md §4 (with a
+// The example printed by `gridfree extrapolate` in docs/INTERFACE.md §4 (with a
 // second grid, out of order, to check sorting).
 const char* kContractExample = R"json({
   "status": "ok", "method": "power",

@@ -1,4 +1,4 @@
-// The SQLite store: schema of CONTRACT.md §5, submit/resume/reuse, the job
+// The SQLite store: schema of docs/INTERFACE.md §5, submit/resume/reuse, the job
 // state machine (claim, retry, release, stale requeue), atomic claims from
 // two connections, series completion and integrity.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Where the iterations fail, the result says so (issue "flow solver",
-// CONTRACT.md §2): a run stopped by max_iterations is `not_converged` with
+// docs/INTERFACE.md §2): a run stopped by max_iterations is `not_converged` with
 // the residuals in its reason; a run that blows up is `diverged`, carries no
 // dp_star and never a NaN. Failures are provoked with momentum
 // over-relaxation (α_u > 1): α_u = 3 stalls with a steady dp* but an

@@ -1,4 +1,4 @@
-// A physical case (CONTRACT.md §2, the "case" object of a job) as typed values:
+// A physical case (docs/INTERFACE.md §2, the "case" object of a job) as typed values:
 // domain, particle size, gas, boundaries, where the particles come from, and
 // the pressure-drop probes. Parsed by job/job_spec.h (parse_case); kept here,
 // in the lowest layer, so particle generators can read it without depending

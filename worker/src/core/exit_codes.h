@@ -1,4 +1,4 @@
-// Process exit codes shared by both executables (CONTRACT.md §2, §4).
+// Process exit codes shared by both executables (docs/INTERFACE.md §2, §4).
 #pragma once
 
 namespace gridfree {

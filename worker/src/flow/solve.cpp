@@ -3,6 +3,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <spdlog/spdlog.h>
@@ -40,6 +41,11 @@ double seconds_since(Clock::time_point t0) {
 SimpleSettings simple_settings_for(const NumericsSpec& numerics, const SimpleSettings& base) {
   SimpleSettings s = base;
   s.steady_tolerance = numerics.tolerances.steady;
+  // tolerances.linear: the loosest relative residual an inner solve may stop
+  // at (docs/SOLVER.md "Inner solves").
+  s.momentum_tolerance = numerics.tolerances.linear;
+  s.pressure_tolerance = numerics.tolerances.linear;
+  s.linear_floor = std::min(s.linear_floor, numerics.tolerances.linear);
   s.max_iterations = numerics.max_iterations;
   return s;
 }

@@ -1,4 +1,4 @@
-// A worker job (CONTRACT.md §2, schemas/job.schema.json) as typed values.
+// A worker job (docs/INTERFACE.md §2, schemas/job.schema.json) as typed values.
 //
 // parse_job() validates a JSON document against the embedded schema and the
 // semantic rules (probes inside the domain, positive sizes, known names, ...)
@@ -31,7 +31,7 @@ struct DepositionSpec {
 };
 
 struct TolerancesSpec {
-  double linear = 1e-8;
+  double linear = 1e-2;   // loosest relative residual of an inner solve (docs/SOLVER.md)
   double filter = 1e-10;
   double steady = 1e-5;
 };

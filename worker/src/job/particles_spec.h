@@ -1,4 +1,4 @@
-// The input of `gridfree-worker particles` (CONTRACT.md §2,
+// The input of `gridfree-worker particles` (docs/INTERFACE.md §2,
 // schemas/particles.schema.json): a domain and particle diameter plus a
 // generator, or a file to convert, optionally boundaries and thermal
 // particle velocities. Parsed into a CaseSpec whose `particles` is the

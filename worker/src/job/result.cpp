@@ -1,4 +1,4 @@
-// The result document (CONTRACT.md §2, schemas/result.schema.json).
+// The result document (docs/INTERFACE.md §2, schemas/result.schema.json).
 #include "job/result.h"
 
 #include <cmath>

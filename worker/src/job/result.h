@@ -1,4 +1,4 @@
-// The worker's result document (CONTRACT.md §2, schemas/result.schema.json).
+// The worker's result document (docs/INTERFACE.md §2, schemas/result.schema.json).
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // Code verification by the method of manufactured solutions: what
-// `gridfree-worker verify` runs (CONTRACT.md §2).
+// `gridfree-worker verify` runs (docs/INTERFACE.md §2).
 //
 //   momentum_continuity_drag  the steady Model A equations with a prescribed
 //                             ε_g and β field in a periodic box, one study per

@@ -1,0 +1,24 @@
+// Case inheritance in a study: a case may name another case of the same
+// study in "extends" and give only the fields it changes.
+//
+//   resolved(case) = merge_patch(resolved(base), case without "extends")
+//
+// merge_patch is RFC 7386 JSON Merge Patch: objects merge key by key
+// (recursively), any other value (number, string, array) replaces the
+// base's, and null removes the key. Chains are allowed; an unknown base, a
+// non-string "extends" or a cycle is a problem at /cases/<name>/extends.
+// A case's "name" is never inherited.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "core/input_error.h"
+
+namespace gridfree {
+
+// The study document with every case's "extends" resolved (and removed).
+// A case whose chain cannot be resolved is left out of the result (so it
+// draws no further problems), and a problem is added at its "extends".
+nlohmann::json resolve_case_extends(const nlohmann::json& study_doc, ProblemList& problems);
+
+}  // namespace gridfree

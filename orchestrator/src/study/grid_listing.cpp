@@ -1,0 +1,86 @@
+// grid_listing, neighbour_warnings and their text/JSON forms (grid_listing.h).
+#include "study/grid_listing.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace gridfree {
+
+std::vector<GridRow> grid_listing(const Study& study) {
+  std::vector<GridRow> rows;
+  const bool requested = !study.grid_delta_star.empty();
+  for (const auto& c : study.cases) {
+    const auto grids = grids_for_case(study, c);
+    for (std::size_t i = 0; i < grids.size(); ++i) {
+      GridRow r;
+      r.case_name = c.name;
+      r.index = i;
+      r.pointer = (requested ? "/grids/delta_star/" : "/grids/cells/") + std::to_string(i);
+      if (requested) r.requested = study.grid_delta_star[i];
+      r.cells = grids[i];
+      r.actual = delta_star_of(c.spec.domain_dp, grids[i]);
+      r.cell_count = static_cast<std::uint64_t>(grids[i][0]) * grids[i][1] * grids[i][2];
+      rows.push_back(r);
+    }
+  }
+  return rows;
+}
+
+static std::string fmt(const char* f, double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows, double min_ratio) {
+  std::vector<std::string> out;
+  for (std::size_t begin = 0; begin < rows.size();) {
+    std::size_t end = begin;
+    while (end < rows.size() && rows[end].case_name == rows[begin].case_name) ++end;
+    std::vector<const GridRow*> g;
+    for (std::size_t i = begin; i < end; ++i) g.push_back(&rows[i]);
+    std::sort(g.begin(), g.end(), [](const GridRow* a, const GridRow* b) { return a->actual < b->actual; });
+    for (std::size_t i = 1; i < g.size(); ++i) {
+      const double ratio = g[i]->actual / g[i - 1]->actual;
+      if (ratio < min_ratio)
+        out.push_back("case " + g[i]->case_name + ": " + g[i - 1]->pointer + " (Δ* " + fmt("%.4g", g[i - 1]->actual) +
+                      ") and " + g[i]->pointer + " (Δ* " + fmt("%.4g", g[i]->actual) + ") differ by a ratio of " +
+                      fmt("%.3f", ratio) + " < " + fmt("%g", min_ratio) +
+                      ": their difference is mostly grid-to-grid scatter, not the trend with Δ*");
+    }
+    begin = end;
+  }
+  return out;
+}
+
+std::string grid_listing_table(const std::vector<GridRow>& rows) {
+  std::string out;
+  char line[256];
+  // "Δ" is two bytes: its columns are one wider in the header.
+  std::snprintf(line, sizeof line, "%-16s %5s %13s %13s %18s %12s\n", "case", "grid", "Δ* requested", "Δ* actual",
+                "nx x ny x nz", "cells");
+  out += line;
+  for (const auto& r : rows) {
+    const std::string req = r.requested ? fmt("%.4g", *r.requested) : "-";
+    const std::string dims =
+        std::to_string(r.cells[0]) + " x " + std::to_string(r.cells[1]) + " x " + std::to_string(r.cells[2]);
+    std::snprintf(line, sizeof line, "%-16s %5zu %12s %12.4g %18s %12llu\n", r.case_name.c_str(), r.index, req.c_str(),
+                  r.actual, dims.c_str(), static_cast<unsigned long long>(r.cell_count));
+    out += line;
+  }
+  return out;
+}
+
+nlohmann::json grid_listing_json(const std::vector<GridRow>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : rows)
+    out.push_back({{"case", r.case_name},
+                   {"grid", r.index},
+                   {"delta_star_requested", r.requested ? nlohmann::json(*r.requested) : nlohmann::json(nullptr)},
+                   {"delta_star", r.actual},
+                   {"cells", {r.cells[0], r.cells[1], r.cells[2]}},
+                   {"cell_count", r.cell_count}});
+  return out;
+}
+
+}  // namespace gridfree

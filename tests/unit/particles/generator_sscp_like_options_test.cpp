@@ -1,0 +1,57 @@
+// The optional sscp_like parameters act as documented (docs/PARTICLES.md):
+// bubble_solids_fraction sets the number of particles in each bubble,
+// round(ε_b V_bubble / V_p); relaxation_sweeps moves the emulsion
+// particles (0 sweeps leaves the jittered lattice) without changing their
+// number or creating overlaps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "particle_checks.h"
+#include "particles/generators.h"
+
+namespace gridfree {
+namespace {
+
+CaseSpec bed_case() {
+  CaseSpec c;
+  c.domain_dp = {16, 40, 8};
+  c.particle_diameter_cm = 0.3256;
+  const BoundarySpec wall{BoundaryKind::kWall, 0, 0};
+  c.boundaries[0] = {wall, wall};
+  c.boundaries[2] = {wall, wall};
+  c.boundaries[1] = {BoundarySpec{BoundaryKind::kMassInflow, 219, 0}, BoundarySpec{BoundaryKind::kPressureOutflow, 0, 0}};
+  return c;
+}
+
+GeneratorSpec sscp(const nlohmann::json& extra) {
+  nlohmann::json p = {{"kind", "sscp_like"}, {"seed", 3},  {"bed_height_dp", 20}, {"solids_fraction", 0.58},
+                      {"bubbles", 1},        {"bubble_radius_dp", 4}};
+  if (extra.is_object()) p.merge_patch(extra);
+  return {"sscp_like", p, "/generator"};
+}
+
+TEST(SscpLikeOptions, BubbleSolidsFractionSetsTheBubbleCount) {
+  const CaseSpec c = bed_case();
+  const double vp = std::numbers::pi / 6, v_bubble = 4.0 / 3.0 * std::numbers::pi * 64;  // in d³
+  const auto dilute = generate_particles(sscp({}), c).particles.size();
+  const auto denser = generate_particles(sscp({{"bubble_solids_fraction", 0.2}}), c).particles.size();
+  EXPECT_EQ(denser - dilute, static_cast<std::size_t>(std::lround(0.2 * v_bubble / vp)) -
+                                 static_cast<std::size_t>(std::lround(0.01 * v_bubble / vp)));
+}
+
+TEST(SscpLikeOptions, RelaxationSweepsMoveParticlesKeepingCountAndNoOverlap) {
+  const CaseSpec c = bed_case();
+  const auto none = generate_particles(sscp({{"relaxation_sweeps", 0}}), c).particles;
+  const auto some = generate_particles(sscp({{"relaxation_sweeps", 20}}), c).particles;
+  ASSERT_EQ(none.size(), some.size());
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < none.size(); ++i) moved += none[i].x != some[i].x || none[i].y != some[i].y;
+  EXPECT_GT(moved, none.size() / 2);  // sweeps accept 30–50 % of the tries, 20 times
+  EXPECT_EQ(test::count_overlaps(some, c.domain_cm(), {false, false, false}), 0u);
+  EXPECT_EQ(test::count_overlaps(none, c.domain_cm(), {false, false, false}), 0u);
+}
+
+}  // namespace
+}  // namespace gridfree
