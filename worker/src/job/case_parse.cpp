@@ -1,12 +1,14 @@
 // parse_case and its pieces (job/job_spec.h, job/case_parts.h): a case
 // object → CaseSpec, with the semantic checks the schema cannot express:
 // positive sizes, probes 0 < y1 < y2 < L_y*, particle files that exist,
-// generator parameters that fit the domain.
+// generator parameters that fit the domain, physical plausibility
+// (job/case_plausibility.h).
 #include <cmath>
 #include <sstream>
 
 #include "core/json_fields.h"
 #include "job/case_parts.h"
+#include "job/case_plausibility.h"
 #include "job/job_spec.h"
 #include "particles/generators.h"
 
@@ -162,6 +164,8 @@ CaseSpec parse_case(const nlohmann::json& j, const std::string& path, const std:
     problems.add(child_pointer(probe_at, "y2_dp"), "must lie inside the domain (below L_y* = " +
                                                        number_text(c.domain_dp[1]) + "), got " +
                                                        number_text(c.probes.y2_dp));
+
+  check_case_plausibility(c, path, problems);
 
   // Generator parameters against the domain, once the domain is sound.
   if (const auto* g = std::get_if<GeneratorSpec>(&c.particles); g != nullptr && !g->kind.empty()) {
