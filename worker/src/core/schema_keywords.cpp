@@ -140,7 +140,8 @@ void SchemaChecker::check_string(const json& s, const json& v) {
 void SchemaChecker::check_array(const SchemaNode& n, const json& v, int depth) {
   const json& s = *n.schema;
   if (const json* k = keyword(s, "minItems"); k && v.size() < k->get<std::size_t>())
-    add("needs at least " + k->dump() + " items, has " + std::to_string(v.size()));
+    add("needs at least " + k->dump() + (k->get<std::size_t>() == 1 ? " item" : " items") + ", has " +
+        std::to_string(v.size()));
   if (const json* k = keyword(s, "maxItems"); k && v.size() > k->get<std::size_t>())
     add("allows at most " + k->dump() + " items, has " + std::to_string(v.size()));
   if (const json* k = keyword(s, "uniqueItems"); k && k->get<bool>()) {

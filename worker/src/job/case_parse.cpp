@@ -169,8 +169,9 @@ CaseSpec parse_case(const nlohmann::json& j, const std::string& path, const std:
 
   // Generator parameters against the domain, once the domain is sound.
   if (const auto* g = std::get_if<GeneratorSpec>(&c.particles); g != nullptr && !g->kind.empty()) {
-    bool domain_ok = c.particle_diameter_cm > 0;
-    for (double l : c.domain_dp) domain_ok = domain_ok && l > 0;
+    bool domain_ok = c.particle_diameter_cm >= kParticleDiameterRange.low &&
+                     c.particle_diameter_cm <= kParticleDiameterRange.high;
+    for (double l : c.domain_dp) domain_ok = domain_ok && l >= kDomainRange.low && l <= kDomainRange.high;
     if (domain_ok) check_generator(*g, c, problems);
   }
   return c;
