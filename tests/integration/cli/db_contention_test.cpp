@@ -74,7 +74,7 @@ TEST(DbContention, ASecondWriterWaitsAndNamesTheHolder) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("db_contention", "wait");
   const auto db = dir / "g.sqlite";
   ASSERT_EQ(gridfree_cmd("submit " + quote(study_file(dir, "first").string()) + " --db g.sqlite", dir, "").exit_code, 0);
-  const std::string jobs_before = count(db, "jobs");
+  const std::string studies_before = count(db, "studies");
 
   FILE* holder = hold_write_lock(db, dir / "held", 4);  // > the 2 s after which the wait is announced
   ASSERT_TRUE(fs::exists(dir / "held"));
@@ -86,14 +86,14 @@ TEST(DbContention, ASecondWriterWaitsAndNamesTheHolder) {
   EXPECT_GT(waited, 2.0);
   EXPECT_NE(r.err.find("waiting for the database"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("sqlite3"), std::string::npos) << "the holder's command line: " << r.err;
-  EXPECT_NE(count(db, "jobs"), jobs_before);
+  EXPECT_NE(count(db, "studies"), studies_before);
 }
 
 TEST(DbContention, AHolderBeyondTheWaitIsNamedNotAnInternalError) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("db_contention", "bound");
   const auto db = dir / "g.sqlite";
   ASSERT_EQ(gridfree_cmd("submit " + quote(study_file(dir, "first").string()) + " --db g.sqlite", dir, "").exit_code, 0);
-  const std::string jobs_before = count(db, "jobs");
+  const std::string studies_before = count(db, "studies");
   FILE* holder = hold_write_lock(db, dir / "held", 4);
   const auto r = gridfree_cmd("run " + quote(study_file(dir, "second").string()) + " --db g.sqlite", dir,
                               "GRIDFREE_DB_WAIT_S=1");
@@ -101,7 +101,7 @@ TEST(DbContention, AHolderBeyondTheWaitIsNamedNotAnInternalError) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(r.err.find("internal"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("still being written by pid"), std::string::npos) << r.err;
-  EXPECT_EQ(count(db, "jobs"), jobs_before);
+  EXPECT_EQ(count(db, "studies"), studies_before);
 }
 
 }  // namespace

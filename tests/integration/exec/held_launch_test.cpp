@@ -77,7 +77,9 @@ TEST(HeldLaunch, AWorkerWhoseOrchestratorDiesBeforeReleaseNeverRuns) {
   int status = 0;
   ::waitpid(orchestrator, &status, 0);
   ASSERT_GT(n, 0);
-  const std::string id(buf, static_cast<std::size_t>(n));  // host:pid:start
+  std::string id(buf, static_cast<std::size_t>(n));  // local:host:pid:start
+  ASSERT_EQ(id.rfind("local:", 0), 0u) << id;
+  id = id.substr(6);
   const pid_t worker = static_cast<pid_t>(std::stol(id.substr(id.find(':') + 1)));
   // The held child sees the pipe close and exits; it is reparented, so poll.
   bool gone = false;
