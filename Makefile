@@ -5,8 +5,12 @@ JOBS      ?= $(shell nproc)
 WERROR    ?= OFF
 BUILD_TYPE ?= Release
 CTEST_ARGS ?=
+ASAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS = fuzz_json_text fuzz_job fuzz_study fuzz_series fuzz_particle_files fuzz_result
 
-.PHONY: all deps test-deps configure build test test-unit demo bench bench-quick clean
+.PHONY: all deps test-deps configure build test test-unit test-sanitize fuzz demo bench bench-quick clean
 
 all: build
 
@@ -28,6 +32,29 @@ test: test-deps build
 test-unit: build
 	@cd $(BUILD) && OMP_WAIT_POLICY=passive ctest --output-on-failure -j $(JOBS) -L unit
 
+# Unit and integration tests under AddressSanitizer + UndefinedBehaviorSanitizer
+# (GCC); verification tests are skipped (minutes of numerics, no new paths).
+test-sanitize: test-deps
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_SANITIZE=ON -DGRIDFREE_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(ASAN_BUILD) -j $(JOBS)
+	@cd $(ASAN_BUILD) && OMP_WAIT_POLICY=passive ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L 'unit|integration' $(CTEST_ARGS)
+
+# Each libFuzzer target for FUZZ_SECONDS on its corpus (fuzz/corpus/<name>,
+# read only; new inputs go to $(FUZZ_BUILD)/corpus). Needs clang.
+fuzz:
+	@scripts/install-deps.sh fuzz
+	@CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_FUZZ=ON \
+	  -DGRIDFREE_BUILD_TESTS=OFF -DGRIDFREE_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(FUZZ_TARGETS)
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	  name=$${t#fuzz_}; mkdir -p $(FUZZ_BUILD)/corpus/$$name fuzz/corpus/$$name; \
+	  echo "== $$t: $(FUZZ_SECONDS) s"; \
+	  $(FUZZ_BUILD)/bin/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+	    -artifact_prefix=$(FUZZ_BUILD)/$$name- -print_final_stats=1 \
+	    $(FUZZ_BUILD)/corpus/$$name fuzz/corpus/$$name 2>&1 | grep -E "^#|Done|ERROR|stat::number_of_executed_units|crash-|timeout-" | tail -4; \
+	done
+
 demo: build
 	@$(BUILD)/bin/gridfree run studies/quickstart.json --db gridfree.sqlite; status=$$?; \
 	  echo "Report: $(CURDIR)/reports/quickstart/report.html (and report.md)"; \
@@ -40,4 +67,4 @@ bench-quick: build
 	@bench/run.sh $(BUILD)/bin --quick
 
 clean:
-	@rm -rf $(BUILD)
+	@rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD)

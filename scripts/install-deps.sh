@@ -2,18 +2,23 @@
 # Installs the Debian packages gridfree needs to build, test and report:
 #   scripts/install-deps.sh        build and run
 #   scripts/install-deps.sh test   also what the tests use
+#   scripts/install-deps.sh fuzz   also clang for the fuzz targets
 # Idempotent: only missing packages are installed (needs root for that).
 set -euo pipefail
 
 packages=(
   g++ make cmake git pkg-config
   libeigen3-dev nlohmann-json3-dev libsqlite3-dev sqlite3 libspdlog-dev
-  libcli11-dev libgtest-dev libvalijson-dev
+  libcli11-dev libgtest-dev
 )
 # `install-deps.sh test` adds what only the tests need: headless Chromium
 # renders the HTML report once.
 if [[ "${1:-}" == "test" ]]; then
   packages+=(chromium)
+fi
+# `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
+if [[ "${1:-}" == "fuzz" ]]; then
+  packages+=(clang libclang-rt-14-dev libomp-dev)
 fi
 
 missing=()

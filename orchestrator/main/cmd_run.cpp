@@ -6,6 +6,7 @@
 // Validation comes first: an invalid study never opens (or creates) the database.
 #include <unistd.h>
 
+#include <filesystem>
 #include <iostream>
 
 #include <spdlog/spdlog.h>
@@ -23,7 +24,7 @@ struct RunOptions {
   std::string db = kDefaultDb;
   int jobs = default_jobs();
   std::string executor = "local";
-  double timeout_s = 0;
+  double timeout_s = kDerivedTimeout;
   std::string out;
   bool replace = false;
 };
@@ -63,13 +64,18 @@ int run_study(const RunOptions& ro) {
   progress.finish();
   // 4. Report and exit code.
   finish_ready_series(store, sub.study_id);
-  refresh_report(store, sub.study_id, options);
+  const bool report_ok = refresh_report(store, sub.study_id, options) && sum.reports_failed == 0;
   const auto st = store.statuses(sub.study_id).front();
   std::cerr << "study " << st.name << ": " << st.status << " — " << st.converged << "/" << st.jobs
             << " jobs converged, " << st.failed << " failed";
   if (sum.interrupted) std::cerr << " (interrupted; run again to resume)";
-  std::cerr << "\nreport: " << (options.report_dir(st.name) / "report.html").string() << '\n';
+  // Only a report that exists is named; a failed write is an error (exit 1).
+  const auto html = options.report_dir(st.name) / "report.html";
+  std::error_code ec;
+  if (report_ok && std::filesystem::is_regular_file(html, ec)) std::cerr << "\nreport: " << html.string() << '\n';
+  else std::cerr << "\nreport: not written (see the error above); the results are in the database\n";
   if (sum.interrupted) return to_int(ExitCode::kInterrupted);
+  if (!report_ok) return to_int(ExitCode::kInternalError);
   if (st.status == "done") return to_int(ExitCode::kOk);
   return to_int(ExitCode::kNotConverged);
 }
@@ -83,7 +89,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   sub->add_option("--db", ro->db, "SQLite database")->capture_default_str();
   sub->add_option("-j,--jobs", ro->jobs, "jobs at a time (default: cores)");
   sub->add_option("--executor", ro->executor, "local | slurm")->capture_default_str();
-  sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (0 = none)");
+  sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->add_option("--out", ro->out, "report folder (default reports/<study>)");
   sub->add_flag("--replace", ro->replace,
                 "replace a stored study of the same name whose definition differs (finished jobs are reused)");
@@ -115,11 +121,11 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
   auto db = std::make_shared<std::string>(kDefaultDb);
   auto jobs = std::make_shared<int>(default_jobs());
   auto executor_kind = std::make_shared<std::string>("local");
-  auto timeout = std::make_shared<double>(0);
+  auto timeout = std::make_shared<double>(kDerivedTimeout);
   sub->add_option("--db", *db, "SQLite database")->capture_default_str();
   sub->add_option("-j,--jobs", *jobs, "jobs at a time (default: cores)");
   sub->add_option("--executor", *executor_kind, "local | slurm")->capture_default_str();
-  sub->add_option("--timeout", *timeout, "per-job timeout in seconds (0 = none)");
+  sub->add_option("--timeout", *timeout, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->callback([=, &exit_code] {
     auto options = scheduler_options(*db, *jobs, *timeout, {});
     auto executor = make_executor(*executor_kind, *db);
@@ -133,7 +139,8 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
     spdlog::info("daemon: working {} with {} job(s) at a time (SIGINT/SIGTERM stops)", *db, *jobs);
     const SchedulerSummary sum = run_scheduler(store, *executor, options);
     spdlog::info("daemon: stopped; {} job(s) finished this session, in-flight jobs requeued", sum.finished);
-    exit_code = to_int(ExitCode::kOk);
+    if (sum.reports_failed > 0) spdlog::error("daemon: {} report(s) could not be written", sum.reports_failed);
+    exit_code = to_int(sum.reports_failed > 0 ? ExitCode::kInternalError : ExitCode::kOk);
   });
 }
 

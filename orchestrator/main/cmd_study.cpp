@@ -61,7 +61,7 @@ std::unique_ptr<Executor> make_executor(const std::string& kind, const std::file
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,
                                    const std::filesystem::path& out_override) {
   if (jobs < 1) throw InputError("-j", "needs at least 1 job at a time");
-  if (timeout_s < 0) throw InputError("--timeout", "must not be negative");
+  if (timeout_s < 0 && timeout_s != kDerivedTimeout) throw InputError("--timeout", "must not be negative");
   SchedulerOptions o;
   o.workers = jobs;
   o.threads_per_job = std::max(1, default_jobs() / jobs);

@@ -39,6 +39,9 @@ std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db);
 // The executor named by --executor ("local" | "slurm"); throws InputError otherwise.
 std::unique_ptr<Executor> make_executor(const std::string& kind, const std::filesystem::path& db);
 
+// --timeout value meaning "derived from the cost model" (sched/job_timeout.h).
+inline constexpr double kDerivedTimeout = -1;
+
 // Scheduler options common to run and daemon.
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,
                                    const std::filesystem::path& out_override);

@@ -10,6 +10,7 @@
 #include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "core/version.h"
+#include "store/sqlite.h"
 
 int main(int argc, char** argv) {
   using namespace gridfree;
@@ -31,6 +32,12 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::cerr << "error: invalid input\n" << e.what() << '\n';
     return to_int(ExitCode::kInvalidInput);
+  } catch (const SqliteError& e) {
+    // A database another process kept busy beyond the wait is not a bug
+    // (store/busy_wait.h); anything else from SQLite is.
+    const bool busy = (e.code() & 0xff) == SQLITE_BUSY || (e.code() & 0xff) == SQLITE_LOCKED;
+    std::cerr << (busy ? "error: " : "error: internal: ") << e.what() << '\n';
+    return to_int(ExitCode::kInternalError);
   } catch (const std::exception& e) {
     std::cerr << "error: internal: " << e.what() << '\n';
     return to_int(ExitCode::kInternalError);

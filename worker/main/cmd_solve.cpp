@@ -25,6 +25,7 @@
 #include "core/input_error.h"
 #include "flow/solve.h"
 #include "job/job_spec.h"
+#include "job/memory_estimate.h"
 #include "job/result.h"
 
 namespace gridfree::worker_cli {
@@ -35,6 +36,7 @@ struct SolveCommandOptions {
   std::string output;
   int threads = 0;  // 0 = all cores
   std::string vtk_dir;
+  std::string max_memory;  // "" = physical memory
   bool verbose = false;
   bool quiet = false;
 };
@@ -50,6 +52,26 @@ void write_atomically(const std::filesystem::path& path, const std::string& text
     if (!out) throw std::runtime_error("cannot write " + tmp.string());
   }
   std::filesystem::rename(tmp, path);
+}
+
+// Refuses (exit 2) a job whose estimated memory exceeds --max-memory, or
+// this machine's physical memory when the option is not given.
+void check_memory(const JobSpec& job, const std::string& max_memory) {
+  double limit = static_cast<double>(machine_memory_bytes());
+  std::string source = "this machine's physical memory";
+  if (!max_memory.empty()) {
+    const auto parsed = parse_memory_size(max_memory);
+    if (!parsed) throw InputError("--max-memory", "'" + max_memory.substr(0, 40) + "' is not a size like 8G or 512M");
+    limit = *parsed;
+    source = "--max-memory";
+  }
+  const double need = job_memory_estimate_bytes(job.numerics.cells);
+  if (limit > 0 && need > limit)
+    throw InputError("/numerics/grid", "the estimated memory " + memory_text(need) + " of " +
+                                           std::to_string(job.numerics.cells[0]) + "x" +
+                                           std::to_string(job.numerics.cells[1]) + "x" +
+                                           std::to_string(job.numerics.cells[2]) + " cells exceeds " + source +
+                                           " (" + memory_text(limit) + ")");
 }
 
 int run_solve(const SolveCommandOptions& o) {
@@ -69,6 +91,7 @@ int run_solve(const SolveCommandOptions& o) {
   const std::filesystem::path job_path(o.job_file);
   const nlohmann::json doc = read_json_file(job_path);
   const JobSpec job = parse_job(doc, job_path.has_parent_path() ? job_path.parent_path() : ".");
+  check_memory(job, o.max_memory);
 
   // 2. Solve, with progress every ~2 s.
   SolveOptions options;
@@ -117,6 +140,8 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("job", opts->job_file, "job JSON file")->required();
   sub->add_option("-o,--output", opts->output, "result JSON file (default: stdout)");
   sub->add_option("--threads", opts->threads, "OpenMP threads (default: all cores)");
+  sub->add_option("--max-memory", opts->max_memory,
+                  "refuse jobs whose estimated memory exceeds this (e.g. 8G; default: physical memory)");
   sub->add_option("--vtk", opts->vtk_dir, "write the final fields as legacy VTK into this folder");
   sub->add_flag("-v,--verbose", opts->verbose, "debug output");
   sub->add_flag("-q,--quiet", opts->quiet, "warnings and errors only");

@@ -18,6 +18,10 @@ struct JobLaunch {
   std::filesystem::path run_dir;   // holds job.json; result.json and worker.log go here
   int threads = 1;                 // --threads for the worker
   double timeout_s = 0;            // 0 = none
+  // The worker is created but does not run until release(job_id): the caller
+  // records external_id() first, so no worker runs that a restart could not
+  // find. If the caller dies before releasing, the worker never runs.
+  bool hold = false;
 };
 
 struct JobExit {
@@ -46,6 +50,8 @@ class Executor {
   virtual std::size_t in_flight() const = 0;
   // An id that can be used to find or kill the job after a restart ("" if none).
   virtual std::string external_id(long long job_id) const = 0;
+  // Lets a job started with `hold` run (no-op for executors that cannot hold).
+  virtual void release(long long /*job_id*/) {}
 };
 
 // The worker command line (docs/INTERFACE.md §2) for a run directory.

@@ -40,12 +40,59 @@ bool kill_process_group_if_alive(const std::string& identity) {
 
 LocalExecutor::~LocalExecutor() { kill_all(); }
 
+namespace {
+
+// fork + a child that waits on `gate_read` before exec'ing argv (see
+// local_executor.h). Only async-signal-safe calls between fork and exec.
+// Returns the pid, or -errno.
+pid_t spawn_held(char* const* argv, int log_fd, int gate_read, int gate_write) {
+  const pid_t pid = ::fork();
+  if (pid != 0) return pid < 0 ? -errno : pid;
+  ::setpgid(0, 0);  // its own process group, led by the worker
+  struct sigaction dfl {};
+  dfl.sa_handler = SIG_DFL;
+  for (int sig : {SIGINT, SIGTERM, SIGPIPE, SIGHUP, SIGCHLD}) ::sigaction(sig, &dfl, nullptr);
+  sigset_t none;
+  sigemptyset(&none);
+  ::sigprocmask(SIG_SETMASK, &none, nullptr);
+  ::close(gate_write);
+  char byte = 0;
+  ssize_t n = 0;
+  do n = ::read(gate_read, &byte, 1);
+  while (n < 0 && errno == EINTR);
+  if (n != 1) ::_exit(0);  // the orchestrator is gone: never run the worker
+  const int null_fd = ::open("/dev/null", O_RDONLY);
+  if (null_fd < 0 || ::dup2(null_fd, STDIN_FILENO) < 0 || ::dup2(log_fd, STDOUT_FILENO) < 0 ||
+      ::dup2(log_fd, STDERR_FILENO) < 0)
+    ::_exit(127);
+  ::execve(argv[0], argv, environ);
+  ::_exit(127);
+}
+
+}  // namespace
+
+void LocalExecutor::release(long long job_id) {
+  for (auto& [pid, c] : running_) {
+    if (c.job_id != job_id || c.gate < 0) continue;
+    const char go = 'x';
+    ssize_t n = 0;
+    do n = ::write(c.gate, &go, 1);
+    while (n < 0 && errno == EINTR);
+    ::close(c.gate);
+    c.gate = -1;
+  }
+}
+
 void LocalExecutor::start(const JobLaunch& job) {
   const auto argv_s = worker_command(worker_, job.run_dir, job.threads);
   std::vector<char*> argv;
   for (const auto& a : argv_s) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   const std::string log = (job.run_dir / "worker.log").string();
+  if (job.hold) {
+    start_held(job, argv, log);
+    return;
+  }
 
   posix_spawn_file_actions_t fa;
   posix_spawnattr_t attr;
@@ -81,6 +128,45 @@ void LocalExecutor::start(const JobLaunch& job) {
   c.run_dir = job.run_dir;
   c.started = Clock::now();
   c.timeout_s = job.timeout_s;
+  if (job.timeout_s > 0)
+    c.deadline = c.started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(job.timeout_s));
+  running_[pid] = std::move(c);
+}
+
+void LocalExecutor::start_held(const JobLaunch& job, const std::vector<char*>& argv, const std::string& log) {
+  JobExit failed;
+  failed.job_id = job.job_id;
+  failed.how = JobExit::How::kLaunchFailed;
+  failed.run_dir = job.run_dir;
+  if (::access(argv[0], X_OK) != 0) {
+    failed.detail = worker_.string() + ": " + std::strerror(errno);
+    failed_launches_.push_back(std::move(failed));
+    return;
+  }
+  const int log_fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  int gate[2] = {-1, -1};
+  if (log_fd < 0 || ::pipe2(gate, O_CLOEXEC) != 0) {
+    failed.detail = log + ": " + std::strerror(errno);
+    if (log_fd >= 0) ::close(log_fd);
+    failed_launches_.push_back(std::move(failed));
+    return;
+  }
+  const pid_t pid = spawn_held(argv.data(), log_fd, gate[0], gate[1]);
+  ::close(log_fd);
+  ::close(gate[0]);
+  if (pid < 0) {
+    ::close(gate[1]);
+    failed.detail = std::string("fork: ") + std::strerror(-pid);
+    failed_launches_.push_back(std::move(failed));
+    return;
+  }
+  ::setpgid(pid, pid);  // also from the parent, so killpg works before the child gets to it
+  Child c;
+  c.job_id = job.job_id;
+  c.run_dir = job.run_dir;
+  c.started = Clock::now();
+  c.timeout_s = job.timeout_s;
+  c.gate = gate[1];
   if (job.timeout_s > 0)
     c.deadline = c.started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(job.timeout_s));
   running_[pid] = std::move(c);
@@ -126,6 +212,7 @@ std::optional<JobExit> LocalExecutor::reap_one() {
     }
     // Anything the worker left in its group goes with it.
     killpg(it->first, SIGKILL);
+    if (it->second.gate >= 0) ::close(it->second.gate);
     running_.erase(it);
     return e;
   }
@@ -150,6 +237,7 @@ std::optional<JobExit> LocalExecutor::wait_any(double timeout_s) {
 std::vector<long long> LocalExecutor::kill_all() {
   std::vector<long long> ids;
   for (auto& [pid, c] : running_) {
+    if (c.gate >= 0) ::close(c.gate);  // a held child exits on the closed pipe
     killpg(pid, SIGKILL);
     int status = 0;
     waitpid(pid, &status, 0);

@@ -3,12 +3,20 @@
 // and a terminal's Ctrl-C reaches only the orchestrator), stdin from
 // /dev/null, stdout+stderr into <run_dir>/worker.log. Finished children are
 // found by waitpid(WNOHANG) polling; timeouts kill the whole group.
+//
+// A held launch (JobLaunch::hold) forks a child that sets up its process
+// group and then blocks reading a pipe from the orchestrator; release()
+// writes one byte and the child execs the worker (same pid, same start time,
+// so the recorded identity stays valid). If the orchestrator dies first, the
+// pipe closes and the child exits without running the worker.
 #pragma once
 
 #include <sys/types.h>
 
 #include <chrono>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "exec/executor.h"
 
@@ -24,6 +32,7 @@ class LocalExecutor : public Executor {
   std::vector<long long> kill_all() override;
   std::size_t in_flight() const override { return running_.size() + failed_launches_.size(); }
   std::string external_id(long long job_id) const override;
+  void release(long long job_id) override;
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -34,7 +43,9 @@ class LocalExecutor : public Executor {
     std::optional<Clock::time_point> deadline;
     double timeout_s = 0;
     bool timed_out = false;
+    int gate = -1;  // write end of the hold pipe until released
   };
+  void start_held(const JobLaunch& job, const std::vector<char*>& argv, const std::string& log);
   std::optional<JobExit> reap_one();
   void enforce_deadlines();
 

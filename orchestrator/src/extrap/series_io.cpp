@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
+#include "core/json_limits.h"
 
 namespace gridfree {
 namespace {
@@ -77,12 +78,7 @@ std::vector<double> json_numbers(const nlohmann::json& doc, const char* key, Pro
 }  // namespace
 
 Series parse_series_json(const std::string& text, const std::string& source) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(source, std::string("invalid JSON: ") + e.what());
-  }
+  const nlohmann::json doc = parse_json_text(text, source);  // limits: core/json_limits.h
   if (!doc.is_object())
     throw InputError(source, "expected an object {\"h\": [...], \"f\": [...]}");
   ProblemList problems;

@@ -1,9 +1,11 @@
 // Atomic file writing: temp file + rename (see atomic_file.h).
 #include "report/atomic_file.h"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -14,8 +16,31 @@
 
 namespace gridfree {
 
+namespace {
+
+// Removes ".<name>.tmp-<pid>-*" files next to `target` whose writer process
+// no longer exists (killed between writing and renaming).
+void remove_stale_temps(const std::filesystem::path& target) {
+  namespace fs = std::filesystem;
+  const std::string prefix = "." + target.filename().string() + ".tmp-";
+  std::error_code ec;
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove(it->path(), ignored);
+    }
+  }
+}
+
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& target, std::string_view content) {
   namespace fs = std::filesystem;
+  remove_stale_temps(target);
   // Unique per process and thread, so concurrent writers never share a temp file.
   const auto tid = std::hash<std::thread::id>{}(std::this_thread::get_id());
   std::string name = ".";

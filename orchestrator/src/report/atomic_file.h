@@ -9,7 +9,8 @@
 namespace gridfree {
 
 // Throws std::runtime_error (with the path and the reason) on failure; the
-// temporary file is removed then.
+// temporary file is removed then. Temporary files of the same target left by
+// a writer that was killed (its pid no longer exists) are removed first.
 void write_file_atomically(const std::filesystem::path& target, std::string_view content);
 
 }  // namespace gridfree

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/json_limits.h"
+
 namespace gridfree {
 namespace {
 
@@ -31,9 +33,9 @@ ResultRow read_result_file(const std::filesystem::path& file) {
   text << in.rdbuf();
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception&) {
-    throw std::runtime_error("result file is not valid JSON");
+    j = parse_json_text(text.str(), file.string());  // limits: core/json_limits.h
+  } catch (const InputError& e) {
+    throw std::runtime_error("result file is not valid JSON (" + format_problems(e.problems()) + ")");
   }
   if (!j.is_object() || !j.contains("status") || !j["status"].is_string())
     throw std::runtime_error("result file has no status");

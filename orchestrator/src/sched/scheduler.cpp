@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "exec/local_executor.h"
+#include "sched/job_timeout.h"
 #include "sched/outcome.h"
 #include "sched/series_finish.h"
 #include "store/owner.h"
@@ -63,11 +64,14 @@ ProgressCounts counts(Store& store, const SchedulerOptions& o) {
 
 // The per-job limit of a study's own "timeout_s" (0 = none); --timeout of
 // run/daemon, when given, overrides it.
-double study_timeout(Store& store, long long study_id) {
-  const nlohmann::json d = store.study_definition(study_id);
-  if (!d.is_object()) return 0;
-  const auto t = d.find("timeout_s");
-  return t != d.end() && t->is_number() ? t->get<double>() : 0;
+// A job's wall-clock limit: --timeout when given (0 = none), else the
+// study's timeout_s, else the default derived from the cost model.
+double job_timeout_s(const SchedulerOptions& o, Store& store, const ClaimedJob& job) {
+  if (o.timeout_s >= 0) return o.timeout_s;
+  const nlohmann::json d = store.study_definition(job.study_id);
+  if (d.is_object())
+    if (const auto t = d.find("timeout_s"); t != d.end() && t->is_number()) return t->get<double>();
+  return default_job_timeout_s(job.cells, o.threads_per_job);
 }
 
 }  // namespace
@@ -86,16 +90,18 @@ int recover_stale_jobs(Store& store) {
   return n;
 }
 
-void refresh_report(Store& store, long long study_id, const SchedulerOptions& o) {
-  if (!o.report_dir) return;
+bool refresh_report(Store& store, long long study_id, const SchedulerOptions& o) {
+  if (!o.report_dir) return true;
   const auto st = store.statuses(study_id);
-  if (st.empty()) return;
+  if (st.empty()) return true;
   const auto dir = o.report_dir(st.front().name);
-  if (dir.empty()) return;
+  if (dir.empty()) return true;
   try {
     write_report(store, study_id, dir);
+    return true;
   } catch (const std::exception& e) {
     spdlog::error("report for study '{}' not written: {}", st.front().name, e.what());
+    return false;
   }
 }
 
@@ -108,7 +114,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     for (long long id : studies) {
       const int n = finish_ready_series(store, id);
       sum.series_finished += n;
-      if (n > 0) refresh_report(store, id, o);
+      if (n > 0 && !refresh_report(store, id, o)) ++sum.reports_failed;
     }
   };
   sweep(o.study ? std::vector<long long>{*o.study} : store.active_studies());
@@ -124,7 +130,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
       launch.threads = o.threads_per_job;
-      launch.timeout_s = o.timeout_s > 0 ? o.timeout_s : study_timeout(store, job->study_id);
+      launch.timeout_s = job_timeout_s(o, store, *job);
       try {
         launch.run_dir = prepare_run_dir(o.runs_root, job->job_hash, job->spec.dump(2));
       } catch (const std::exception& e) {
@@ -132,9 +138,11 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
         throw;
       }
       store.set_job_paths(job->job_id, (launch.run_dir / "result.json").string());
+      launch.hold = true;  // recorded before it runs: a restart can always find it
       executor.start(launch);
       if (auto ext = executor.external_id(job->job_id); !ext.empty())
         store.set_job_external_id(job->job_id, ext);
+      executor.release(job->job_id);
       running.emplace(job->job_id, std::move(f));
       if (o.progress) o.progress->update(counts(store, o));
     }

@@ -27,7 +27,7 @@ struct SchedulerOptions {
   std::optional<long long> study;   // run: this study only; daemon: nullopt (all)
   int workers = 1;                  // jobs at once (-j)
   int threads_per_job = 1;          // --threads of each worker (cores / j, at least 1)
-  double timeout_s = 0;             // per job; 0 = none
+  double timeout_s = -1;            // per job; 0 = none, < 0 = default_job_timeout_s (sched/job_timeout.h)
   int max_attempts = 2;             // a retryable failure is tried once more
   bool stop_when_idle = true;       // run: yes; daemon: no (poll for new work)
   double idle_poll_s = 1.0;
@@ -46,6 +46,7 @@ struct SchedulerSummary {
   int retried = 0;
   int series_finished = 0;
   bool interrupted = false;
+  int reports_failed = 0;  // report writes that failed (logged)
 };
 
 // Startup recovery: requeues running jobs whose owner process is gone and
@@ -54,8 +55,9 @@ int recover_stale_jobs(Store& store);
 
 SchedulerSummary run_scheduler(Store& store, Executor& executor, const SchedulerOptions& options);
 
-// Rewrites the report of a study (logs and swallows report errors: the
-// results are safe in the store either way).
-void refresh_report(Store& store, long long study_id, const SchedulerOptions& options);
+// Rewrites the report of a study. A failure is logged and returned as false
+// (the results are safe in the store either way; `run` and `daemon` then
+// exit non-zero).
+bool refresh_report(Store& store, long long study_id, const SchedulerOptions& options);
 
 }  // namespace gridfree

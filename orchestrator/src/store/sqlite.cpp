@@ -1,12 +1,22 @@
 // RAII wrappers over sqlite3 (see sqlite.h).
 #include "store/sqlite.h"
 
+#include <cstdlib>
 #include <string>
 
 namespace gridfree {
 namespace {
 
+// A busy database after the wait names the process holding it.
+std::string busy_message(sqlite3* db) {
+  const char* file = db != nullptr ? sqlite3_db_filename(db, "main") : nullptr;
+  if (file == nullptr || *file == '\0') return "the database is busy";
+  return std::string("the database ") + file + " is still being written by " + database_lock_holder(file) +
+         " after the wait for it ended; try again when it has finished";
+}
+
 [[noreturn]] void fail(sqlite3* db, int rc, const std::string& context) {
+  if ((rc & 0xff) == SQLITE_BUSY) throw SqliteError(busy_message(db), rc);
   std::string msg = context + ": ";
   msg += db != nullptr ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
   throw SqliteError(msg, rc);
@@ -24,7 +34,12 @@ Database::Database(const std::filesystem::path& file, bool create, int busy_time
     db_ = nullptr;
     throw SqliteError(msg, rc);
   }
-  sqlite3_busy_timeout(db_, busy_timeout_ms);
+  busy_ = std::make_unique<BusyWait>();
+  busy_->file = file;
+  busy_->limit_ms = busy_timeout_ms;
+  if (const char* env = std::getenv("GRIDFREE_DB_WAIT_S"); env != nullptr && std::atoi(env) > 0)
+    busy_->limit_ms = std::atoi(env) * 1000;
+  sqlite3_busy_handler(db_, busy_wait_handler, busy_.get());
   exec("PRAGMA foreign_keys = ON");
 }
 
@@ -37,6 +52,7 @@ void Database::exec(std::string_view sql) {
   if (rc != SQLITE_OK) {
     std::string msg = err != nullptr ? err : sqlite3_errstr(rc);
     sqlite3_free(err);
+    if ((rc & 0xff) == SQLITE_BUSY) throw SqliteError(busy_message(db_), rc);
     throw SqliteError("sqlite: " + msg + " (in: " + text.substr(0, 80) + ")", rc);
   }
 }

@@ -11,6 +11,9 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <memory>
+
+#include "store/busy_wait.h"
 
 namespace gridfree {
 
@@ -27,8 +30,10 @@ class Statement;
 
 class Database {
  public:
-  // Opens (create = also creates) the file; sets busy_timeout, foreign keys.
-  Database(const std::filesystem::path& file, bool create, int busy_timeout_ms = 10000);
+  // Opens (create = also creates) the file; sets foreign keys and a busy
+  // handler that waits up to busy_timeout_ms for another writer
+  // (store/busy_wait.h).
+  Database(const std::filesystem::path& file, bool create, int busy_timeout_ms = kDefaultBusyWaitMs);
   ~Database();
   Database(const Database&) = delete;
   Database& operator=(const Database&) = delete;
@@ -41,6 +46,7 @@ class Database {
 
  private:
   sqlite3* db_ = nullptr;
+  std::unique_ptr<BusyWait> busy_;
 };
 
 class Statement {

@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "core/schema_validation.h"
 #include "drag/drag_law.h"
+#include "grid/grid.h"
 #include "job/job_spec.h"
 #include "schemes/limiter.h"
 #include "study/case_extends.h"
@@ -359,6 +360,12 @@ void check_grids(const Study& s, ProblemList& problems) {
         if (grids[i] == grids[j])
           add_once(problems, list + std::to_string(i),
                    "gives the same cells as " + list + std::to_string(j) + " for case " + c.name);
+      if (std::any_of(grids[i].begin(), grids[i].end(), [](int n) { return n > kMaxCellsPerAxis; })) {
+        add_once(problems, list + std::to_string(i),
+                 "gives more than " + std::to_string(kMaxCellsPerAxis) + " cells along one direction for case " +
+                     c.name + " (docs/LIMITS.md)");
+        continue;
+      }
       const double mem = estimated_memory_bytes(grids[i]);
       if (machine > 0 && mem > machine)
         add_once(problems, list + std::to_string(i),

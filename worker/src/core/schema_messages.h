@@ -1,36 +1,35 @@
-// Turns valijson's raw results into readable problems (used by
-// core/schema_validation.cpp; separate so the wording rules are in one place).
-//
-// Each raw error carries the path of the value it is about and valijson's
-// generic description ("Failed to match against any enum values."). The
-// schema is walked along that path (through $ref, allOf/anyOf/oneOf, and the
-// branch of if/then/else the value takes) to find the constraint that
-// failed, which gives the specific reason ("'superbe' is not one of fou,
-// central, ..."). Wrapper errors of combinators are dropped when a more
-// specific error lies at or below them; duplicates are merged.
+// Wording of schema problems (used by core/schema_keywords.cpp), kept in one
+// place so every reason reads the same way and stays short: a value is
+// quoted only up to a short prefix, and arrays / objects are described by
+// their size, never printed (a hostile document may be huge or deep).
 #pragma once
 
-#include <functional>
+#include <cstddef>
 #include <string>
-#include <string_view>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "core/input_error.h"
-
 namespace gridfree {
 
-struct RawSchemaError {
-  std::vector<std::string> path;  // keys / array indices from the document root
-  std::string description;        // valijson's wording
-};
+// At most this many characters of a string value are quoted in a message.
+inline constexpr std::size_t kQuotedPrefix = 40;
 
-// Resolves a schema document by URI ("job.schema.json"); the reference stays valid.
-using SchemaFetch = std::function<const nlohmann::json&(std::string_view uri)>;
+// JSON Schema type name of a value: null, boolean, integer, number, string, array, object.
+std::string schema_type_of(const nlohmann::json& v);
 
-std::vector<Problem> explain_schema_errors(const std::vector<RawSchemaError>& errors,
-                                           const nlohmann::json& doc, const nlohmann::json& root_schema,
-                                           const SchemaFetch& fetch);
+// "'abc'", "'abcd...' (30000 characters)", "1.5", "true", "an array of 3 items", "an object with 2 keys".
+std::string show_value(const nlohmann::json& v);
+
+// "an integer", "a string", "a number or null" (type names from a schema's "type").
+std::string with_article(const std::string& type);
+
+// The "type" keyword's value in words: "integer", "number or null".
+std::string type_names(const nlohmann::json& type);
+
+// Schema values joined for a message: "fou, central, minmod" (strings unquoted).
+std::string join_values(const nlohmann::json& values, const std::string& separator);
+
+// A bound of the schema as written: 0, 1, 1e-08.
+std::string show_bound(const nlohmann::json& bound);
 
 }  // namespace gridfree

@@ -1,30 +1,14 @@
-// Runs valijson on a document against an embedded schema and hands its raw
-// results to explain_schema_errors (core/schema_messages.h) for readable,
-// pointer-addressed problems.
-//
-// valijson reports through exceptions only when this is set before its headers.
-#define VALIJSON_USE_EXCEPTIONS 1
-// GCC 12 reports a false -Wrestrict inside std::string::replace as inlined
-// into valijson's JSON-pointer code (a known GCC 12 false positive); it must be silenced
-// before any standard header is read.
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ == 12
-#pragma GCC diagnostic ignored "-Wrestrict"
-#endif
-
+// Validation against the embedded schemas (core/schema_validation.h): finds
+// the schema documents, checks them against the implemented subset and runs
+// the keyword checks (core/schema_keywords.h).
 #include "core/schema_validation.h"
 
 #include <map>
-#include <memory>
 #include <stdexcept>
 
-#include <valijson/adapters/nlohmann_json_adapter.hpp>
-#include <valijson/schema.hpp>
-#include <valijson/schema_parser.hpp>
-#include <valijson/validation_results.hpp>
-#include <valijson/validator.hpp>
-
 #include "core/embedded_schemas.h"
-#include "core/schema_messages.h"
+#include "core/schema_keywords.h"
+#include "core/schema_support.h"
 
 namespace gridfree {
 namespace {
@@ -55,53 +39,30 @@ std::string_view find_schema_text(std::string_view name) {
 nlohmann::json load_embedded_schema(std::string_view schema_name) {
   const std::string_view text = find_schema_text(schema_name);
   if (text.empty()) throw std::runtime_error("no embedded schema named '" + std::string(schema_name) + "'");
+  nlohmann::json schema;
   try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+    schema = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error("embedded schema '" + std::string(schema_name) + "' is not valid JSON: " + e.what());
   }
+  if (const auto parts = unsupported_schema_parts(schema); !parts.empty())
+    throw std::runtime_error("embedded schema '" + std::string(schema_name) +
+                             "' is outside the supported JSON-Schema subset: " + parts.front());
+  return schema;
 }
 
 std::vector<Problem> validate_against_schema(const nlohmann::json& doc, std::string_view schema_name) {
-  // Parsed schema documents by name, shared by valijson's $ref fetching and
-  // by the message builder.
+  // Parsed schema documents by name, for cross-file $refs.
   std::map<std::string, nlohmann::json, std::less<>> documents;
-  auto fetch = [&documents](std::string_view uri) -> const nlohmann::json& {
+  const SchemaFetch fetch = [&documents](std::string_view uri) -> const nlohmann::json& {
     std::string key(uri.substr(0, uri.find('#')));
     auto it = documents.find(key);
     if (it == documents.end()) it = documents.emplace(key, load_embedded_schema(key)).first;
     return it->second;
   };
-  const nlohmann::json& root = fetch(std::string(schema_name));
-
-  valijson::Schema schema;
-  valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
-  valijson::adapters::NlohmannJsonAdapter schema_adapter(root);
-  parser.populateSchema(
-      schema_adapter, schema,
-      [&fetch](const std::string& uri) -> const nlohmann::json* {
-        // valijson takes ownership of what it fetches and frees it below.
-        return new nlohmann::json(fetch(uri));
-      },
-      [](const nlohmann::json* fetched) { delete fetched; });
-
-  valijson::Validator validator;
-  valijson::ValidationResults results;
-  valijson::adapters::NlohmannJsonAdapter target(doc);
-  if (validator.validate(schema, target, &results)) return {};
-
-  std::vector<RawSchemaError> raw;
-  for (const auto& error : results) {
-    RawSchemaError r;
-    // valijson's context is "<root>", then "[key]" / "[index]" per level.
-    for (std::size_t i = 1; i < error.context.size(); ++i) {
-      const std::string& c = error.context[i];
-      r.path.push_back(c.size() >= 2 && c.front() == '[' && c.back() == ']' ? c.substr(1, c.size() - 2) : c);
-    }
-    r.description = error.description;
-    raw.push_back(std::move(r));
-  }
-  return explain_schema_errors(raw, doc, root, fetch);
+  const nlohmann::json& root = fetch(schema_name);
+  SchemaChecker checker(fetch);
+  return checker.validate({&root, &root}, doc);
 }
 
 std::string json_pointer_of(const std::vector<std::string>& tokens) {

@@ -21,8 +21,11 @@ int Grid::cell_of(int axis, double x) const {
 
 std::array<int, 3> cells_for_delta_star(const std::array<double, 3>& domain_dp, double delta_star) {
   std::array<int, 3> cells{};
-  for (int a = 0; a < 3; ++a)
-    cells[a] = std::max(1, static_cast<int>(std::lround(domain_dp[a] / delta_star)));
+  for (int a = 0; a < 3; ++a) {
+    // Saturates instead of overflowing the int (callers refuse > kMaxCellsPerAxis).
+    const double n = std::round(domain_dp[a] / delta_star);
+    cells[a] = !(n <= static_cast<double>(kMaxCellsPerAxis)) ? kMaxCellsPerAxis + 1 : n >= 1 ? static_cast<int>(n) : 1;
+  }
   return cells;
 }
 

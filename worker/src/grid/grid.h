@@ -32,7 +32,12 @@ struct Grid {
   int cell_of(int axis, double x) const;
 };
 
-// Cells per direction from a dimensionless cell size: round(L*/Δ*), at least 1.
+// Most cells along one direction a job may ask for (docs/LIMITS.md).
+inline constexpr int kMaxCellsPerAxis = 1000000;
+
+// Cells per direction from a dimensionless cell size: round(L*/Δ*), at least 1;
+// kMaxCellsPerAxis + 1 when L*/Δ* exceeds the limit (or is NaN), so
+// callers can refuse it instead of meeting an overflowed int.
 std::array<int, 3> cells_for_delta_star(const std::array<double, 3>& domain_dp, double delta_star);
 
 }  // namespace gridfree

@@ -1,12 +1,14 @@
 // parse_case and its pieces (job/job_spec.h, job/case_parts.h): a case
 // object → CaseSpec, with the semantic checks the schema cannot express:
 // positive sizes, probes 0 < y1 < y2 < L_y*, particle files that exist,
-// generator parameters that fit the domain.
+// generator parameters that fit the domain, physical plausibility
+// (job/case_plausibility.h).
 #include <cmath>
 #include <sstream>
 
 #include "core/json_fields.h"
 #include "job/case_parts.h"
+#include "job/case_plausibility.h"
 #include "job/job_spec.h"
 #include "particles/generators.h"
 
@@ -186,10 +188,13 @@ CaseSpec parse_case(const nlohmann::json& j, const std::string& path, const std:
                                                        number_text(c.domain_dp[1]) + "), got " +
                                                        number_text(c.probes.y2_dp));
 
+  check_case_plausibility(c, path, problems);
+
   // Generator parameters against the domain, once the domain is sound.
   if (const auto* g = std::get_if<GeneratorSpec>(&c.particles); g != nullptr && !g->kind.empty()) {
-    bool domain_ok = c.particle_diameter_cm > 0;
-    for (double l : c.domain_dp) domain_ok = domain_ok && l > 0;
+    bool domain_ok = c.particle_diameter_cm >= kParticleDiameterRange.low &&
+                     c.particle_diameter_cm <= kParticleDiameterRange.high;
+    for (double l : c.domain_dp) domain_ok = domain_ok && l >= kDomainRange.low && l <= kDomainRange.high;
     if (domain_ok) check_generator(*g, c, problems);
   }
   return c;

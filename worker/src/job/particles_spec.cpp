@@ -3,6 +3,7 @@
 #include "core/json_fields.h"
 #include "core/schema_validation.h"
 #include "job/case_parts.h"
+#include "job/case_plausibility.h"
 #include "particles/generators.h"
 
 namespace gridfree {
@@ -18,6 +19,7 @@ CaseSpec parse_particles_spec(const nlohmann::json& doc, const std::filesystem::
   check_domain(c.domain_dp, "/domain_dp", problems);
   c.particle_diameter_cm = read_number(doc, "particle_diameter_cm", "", problems);
   if (!(c.particle_diameter_cm > 0)) problems.add("/particle_diameter_cm", "must be > 0");
+  check_geometry_plausibility(c.domain_dp, c.particle_diameter_cm, "", problems);
   c.particles = parse_particle_source(doc, "", base_dir, problems);
 
   if (doc.contains("boundaries")) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/input_error.h"
 #include "core/schema_validation.h"
@@ -41,6 +42,10 @@ std::optional<SolveStatus> solve_status_from_name(std::string_view name) {
 }
 
 nlohmann::json to_json(const JobResult& r) {
+  // A converged result always carries its dp*: the worker refuses cases
+  // without inflow (job/case_plausibility.h), so this is a program error.
+  if (r.status == SolveStatus::kConverged && !(r.dp_star && std::isfinite(*r.dp_star)))
+    throw std::logic_error("a converged result without a finite dp_star");
   nlohmann::json j;
   j["schema"] = "gridfree/result/1";
   j["job_hash"] = r.job_hash;
