@@ -23,6 +23,7 @@ void add_daemon_command(CLI::App& app, int& exit_code);
 void add_status_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_cancel_command(CLI::App& app, int& exit_code);
+void add_retry_command(CLI::App& app, int& exit_code);
 
 inline constexpr const char* kDefaultDb = "gridfree.sqlite";
 
@@ -30,9 +31,6 @@ int default_jobs();  // number of cores
 
 // Opens an existing database (throws InputError naming --db if missing).
 std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db);
-
-// The executor named by --executor ("local" | "slurm"); throws InputError otherwise.
-std::unique_ptr<Executor> make_executor(const std::string& kind, const std::filesystem::path& db);
 
 // Scheduler options common to run and daemon.
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,

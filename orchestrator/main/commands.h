@@ -7,6 +7,6 @@
 namespace gridfree::cli {
 
 void add_extrapolate_command(CLI::App& app, int& exit_code);
-void add_study_commands(CLI::App& app, int& exit_code);  // validate, plan, run, submit, daemon, status, report, cancel
+void add_study_commands(CLI::App& app, int& exit_code);  // validate, plan, run, submit, daemon, status, report, cancel, retry
 
 }  // namespace gridfree::cli

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -18,10 +19,22 @@ struct JobLaunch {
   std::filesystem::path run_dir;   // holds job.json; result.json and worker.log go here
   int threads = 1;                 // --threads for the worker
   double timeout_s = 0;            // 0 = none
+  std::string name;                // for people: study, series, grid (Slurm job name)
+  std::array<int, 3> cells{};      // grid size (cost-model estimates)
+};
+
+// A job's state in an external queue, for `status` (Slurm: id, state, reason).
+struct JobUpdate {
+  long long job_id = 0;
+  std::string external_id;         // "slurm:1234_5"
+  std::string state, reason;       // PENDING / Priority, RUNNING / None, ...
 };
 
 struct JobExit {
-  enum class How { kExited, kSignaled, kTimedOut, kKilled, kLaunchFailed, kLost };
+  // kRefused: the cluster will not run it (bad partition, a limit the job
+  // exceeds): final. kVanished: gone without a trace while nobody watched
+  // (adopted after a restart): run again without spending an attempt.
+  enum class How { kExited, kSignaled, kTimedOut, kKilled, kLaunchFailed, kLost, kRefused, kVanished };
   long long job_id = 0;
   How how = How::kExited;
   int code = 0;                    // exit code (kExited)
@@ -46,6 +59,14 @@ class Executor {
   virtual std::size_t in_flight() const = 0;
   // An id that can be used to find or kill the job after a restart ("" if none).
   virtual std::string external_id(long long job_id) const = 0;
+  // Submits what start() has gathered (executors that batch jobs, such as
+  // Slurm arrays); called after a round of start()s.
+  virtual void flush() {}
+  // Ids assigned and queue states changed since the last call.
+  virtual std::vector<JobUpdate> take_updates() { return {}; }
+  // Takes over a job started by an earlier process from its external id;
+  // false when this executor cannot (then the job is requeued).
+  virtual bool adopt(const JobLaunch& /*job*/, const std::string& /*external_id*/) { return false; }
 };
 
 // The worker command line (CONTRACT.md §2) for a run directory.

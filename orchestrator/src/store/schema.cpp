@@ -140,6 +140,14 @@ LEFT JOIN results r ON r.job_id = j.id
 LEFT JOIN uncertainties u ON u.series_id = se.id AND u.job_id = j.id;
 )sql";
 
+// Slurm job state for `status` (feature: Slurm executor): the queue's word
+// for a job (PENDING, RUNNING ...) and why it waits (Priority,
+// JobArrayTaskLimit ...), as last polled; NULL for local jobs.
+constexpr const char* kV2SlurmState = R"sql(
+ALTER TABLE jobs ADD COLUMN queue_state TEXT;
+ALTER TABLE jobs ADD COLUMN queue_reason TEXT;
+)sql";
+
 }  // namespace
 
 int schema_version(Database& db) {
@@ -160,6 +168,7 @@ void migrate(Database& db) {
     throw SqliteError("database schema version " + std::to_string(v) + " is newer than this gridfree (" +
                           std::to_string(kSchemaVersion) + ")", SQLITE_ERROR);
   if (v < 1) db.exec(kV1);
+  if (v < 2) db.exec(kV2SlurmState);
   db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   tx.commit();
 }
