@@ -139,7 +139,7 @@ void SlurmExecutor::submit_group(const std::vector<JobLaunch>& group, const Slur
     JobExit e;
     e.job_id = j.job_id;
     e.how = JobExit::How::kRefused;
-    e.detail = "sbatch: " + msg;
+    e.detail = msg;  // sbatch's own words ("sbatch: error: ...")
     e.run_dir = j.run_dir;
     finished_.push_back(std::move(e));
   }
@@ -182,12 +182,15 @@ double SlurmExecutor::poll_interval() const {
 }
 
 void SlurmExecutor::finish(std::map<long long, Task>::iterator it, JobExit e) {
-  const Task& t = it->second;
+  Task& t = it->second;
   if (e.how == JobExit::How::kExited && t.state == "RUNNING") {
     const double run_s = t.used_s + seconds_since(t.polled_at);
     mean_run_s_ = (mean_run_s_ * runs_seen_ + run_s) / (runs_seen_ + 1);
     ++runs_seen_;
   }
+  t.state = "ENDED";  // left the queue, or about to
+  t.reason.clear();
+  note(t);
   finished_.push_back(std::move(e));
   tasks_.erase(it);
 }

@@ -63,6 +63,8 @@ bool never_startable(const std::string& r) {
       "InvalidQOS",         "QOSMaxMemoryPerJob", "QOSMinCpuNotSatisfied", "QOSMinGRES",
       "AccountNotAllowed",  "QOSNotAllowed",      "PartitionMemLimit"};
   if (std::find(kNever.begin(), kNever.end(), r) != kNever.end()) return true;
+  // The node could not launch it; Slurm holds it until an administrator acts.
+  if (r == "launch failed requeued held") return true;
   // QOSMaxWallDurationPerJobLimit, QOSMaxCpuPerJobLimit, AssocMaxNodePerJobLimit ...:
   // a per-job limit the job itself exceeds; the per-user/per-account limits
   // (QOSMaxJobsPerUserLimit, AssocGrpCpuLimit ...) clear as other jobs end.

@@ -40,8 +40,8 @@ std::string array_script(const std::filesystem::path& worker, const SlurmArray& 
   std::string line;
   for (const auto& w : cmd) {
     std::string word = shell_quote(w);
-    const auto at = word.find("/RUN_DIR");
-    if (at != std::string::npos) word = "\"$dir\"" + shell_quote(w.substr(at + 8));
+    const auto at = w.find("/RUN_DIR");
+    if (at != std::string::npos) word = shell_quote(w.substr(0, at)) + "\"$dir\"" + shell_quote(w.substr(at + 8));
     line += (line.empty() ? "" : " ") + word;
   }
   s << line << " > \"$dir/worker.log\" 2>&1\n"

@@ -8,7 +8,7 @@
 #   slurm_cluster.sh stop DIR    stops every daemon started in DIR
 #   slurm_cluster.sh ctld-stop DIR | ctld-start DIR   controller outage
 #
-# The node is this host under the name "gf<port>", two CPUs or more; job
+# The node is this host under the name "gf<port>", eight CPUs or more; job
 # records go to DIR/jobcomp.log (jobcomp/filetxt: Slurm's own record of every
 # job that ended, read by the tests to count runs). There is no slurmdbd, so
 # `sacct` is unavailable, as on many small clusters. Must run as root (slurmd
@@ -56,12 +56,18 @@ start)
   for tool in munged slurmctld slurmd sinfo sbatch; do
     command -v $tool >/dev/null || { echo "slurm_cluster.sh: $tool not found (install slurmctld slurmd munge)" >&2; exit 1; }
   done
-  mkdir -p "$dir/spool/ctld" "$dir/spool/d" "$dir/munge"
+  # Unix socket paths may not exceed 108 bytes: munged's socket and slurmd's
+  # spool (which holds the step sockets) go to a short folder of their own.
+  short=$(mktemp -d /tmp/gfslurm.XXXXXX)
+  echo "$short" > "$dir/short_dir"
+  mkdir -p "$dir/spool/ctld" "$short/d" "$dir/munge"
   chmod 700 "$dir/munge"
   [ -f "$dir/munge/munge.key" ] || { dd if=/dev/urandom of="$dir/munge/munge.key" bs=1024 count=1 2>/dev/null; chmod 400 "$dir/munge/munge.key"; }
   port=$((20000 + ($$ % 20000)))
   node=gf$port
-  cpus=$(nproc); [ "$cpus" -ge 2 ] || cpus=2
+  # Eight CPUs or the real count if larger (config_overrides lets slurmd
+  # believe the configuration), so that -j 8 runs eight tiny jobs at once.
+  cpus=${GRIDFREE_SLURM_CPUS:-$(nproc)}; [ "$cpus" -ge 8 ] || cpus=8
   mem=$(awk '/MemTotal/ { print int($2 / 1024 / 2) }' /proc/meminfo)
   cat > "$conf" <<CONF
 ClusterName=gridfree-test
@@ -70,16 +76,18 @@ SlurmctldPort=$port
 SlurmdPort=$((port + 1))
 AuthType=auth/munge
 CredType=cred/munge
-AuthInfo=socket=$dir/munge/munge.socket
+AuthInfo=socket=$short/munge.socket
+SlurmdParameters=config_overrides
 SlurmUser=root
 SlurmdUser=root
 StateSaveLocation=$dir/spool/ctld
-SlurmdSpoolDir=$dir/spool/d
+SlurmdSpoolDir=$short/d
 SlurmctldPidFile=$dir/slurmctld.pid
 SlurmdPidFile=$dir/slurmd.pid
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 JobAcctGatherType=jobacct_gather/none
+MpiDefault=none
 AccountingStorageType=accounting_storage/none
 JobCompType=jobcomp/filetxt
 JobCompLoc=$dir/jobcomp.log
@@ -104,9 +112,9 @@ NodeName=$node NodeHostname=$(hostname) NodeAddr=127.0.0.1 CPUs=$cpus RealMemory
 PartitionName=debug Nodes=$node Default=YES MaxTime=INFINITE State=UP OverSubscribe=NO
 PartitionName=short Nodes=$node Default=NO MaxTime=1 State=UP
 CONF
-  munged -f --socket="$dir/munge/munge.socket" --key-file="$dir/munge/munge.key" \
+  munged -f --socket="$short/munge.socket" --key-file="$dir/munge/munge.key" \
     --pid-file="$dir/munge/munged.pid" --log-file="$dir/munge/munged.log" --seed-file="$dir/munge/seed"
-  wait_for 10 test -S "$dir/munge/munge.socket"
+  wait_for 10 test -S "$short/munge.socket"
   start_ctld
   slurmd -f "$conf" -N "$node" -L "$dir/slurmd.log"
   wait_for 30 node_idle || { echo "node never became idle; logs:" >&2; tail -20 "$dir/slurmd.log" "$dir/slurmctld.log" >&2; exit 1; }
@@ -116,6 +124,11 @@ stop)
   stop_pid "$dir/slurmd.pid"
   stop_pid "$dir/slurmctld.pid"
   stop_pid "$dir/munge/munged.pid"
+  if [ -f "$dir/short_dir" ]; then
+    short=$(cat "$dir/short_dir")
+    case $short in /tmp/gfslurm.*) rm -rf "$short" ;; esac
+    rm -f "$dir/short_dir"
+  fi
   ;;
 ctld-stop) stop_pid "$dir/slurmctld.pid" ;;
 ctld-start) start_ctld ;;

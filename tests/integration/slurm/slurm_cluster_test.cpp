@@ -82,6 +82,11 @@ class SlurmCluster : public ::testing::Test {
     unsetenv("GRIDFREE_FAKE_SLEEP");
   }
   void TearDown() override {
+    for (pid_t pid : spawned_)
+      if (waitpid(pid, nullptr, WNOHANG) == 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, nullptr, 0);
+      }
     if (started_) std::system((quote(kCluster.string()) + " stop " + quote(cluster_.string())).c_str());
   }
 
@@ -103,6 +108,7 @@ class SlurmCluster : public ::testing::Test {
     argv.push_back(nullptr);
     pid_t pid = 0;
     posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ);
+    spawned_.push_back(pid);
     return pid;
   }
 
@@ -153,6 +159,7 @@ class SlurmCluster : public ::testing::Test {
 
   fs::path dir_, cluster_, work_;
   bool started_ = false;
+  std::vector<pid_t> spawned_;
 };
 
 TEST_F(SlurmCluster, ArraysGiveTheLocalExecutorsResultsAndQuoteEveryPath) {
@@ -183,9 +190,15 @@ TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
   const pid_t pid = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1.5");
   // Two done, two running, four pending: then the orchestrator dies.
   ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") >= 2; }, 60));
-  const auto status = gridfree("status adopt --db " + quote(db().string()));
-  EXPECT_NE(status.out.find("JobArrayTaskLimit"), std::string::npos) << status.out;  // pending, with Slurm's reason
-  EXPECT_NE(status.out.find("RUNNING"), std::string::npos) << status.out;
+  // `status` shows Slurm's ids, states and reasons (as last polled).
+  std::string shown;
+  EXPECT_TRUE(wait_until(
+      [&] {
+        shown = gridfree("status adopt --db " + quote(db().string())).out;
+        return shown.find("RUNNING") != std::string::npos && shown.find("JobArrayTaskLimit") != std::string::npos;
+      },
+      10))
+      << shown;
   kill(pid, SIGKILL);
   waitpid(pid, nullptr, 0);
   const int recorded = count("SELECT COUNT(*) FROM results");
@@ -194,7 +207,7 @@ TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
   ASSERT_TRUE(wait_until([&] { return slurm_jobs_ended() >= recorded + 2; }, 30));
   const auto r = gridfree(args, "GRIDFREE_FAKE_SLEEP=1.5");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("adopted"), std::string::npos) << r.out;
+  EXPECT_NE((r.out + r.err).find("adopted"), std::string::npos) << r.out << r.err;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 8);
   expect_each_job_solved_once(8);
   EXPECT_EQ(slurm_jobs_ended(), 8);  // Slurm ran 8 jobs, not 8 + resubmissions
