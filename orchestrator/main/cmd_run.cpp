@@ -47,7 +47,7 @@ int run_study(const RunOptions& ro) {
   // 2. Submit (or resume).
   Store store(ro.db, true);
   const SubmitResult sub = submit_study(store, study, ex);
-  const auto adopted = adopt_stale_jobs(store, *executor, options.owner);
+  const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
   recover_stale_jobs(store);
   // 3. Work the study until it is done.
   StopSignals signals;
@@ -115,7 +115,7 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
     auto options = scheduler_options(*db, *jobs, *timeout, {});
     auto executor = make_executor(*executor_flags, *db, *jobs, options);
     Store store(*db, true);
-    const auto adopted = adopt_stale_jobs(store, *executor, options.owner);
+    const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
     recover_stale_jobs(store);
     StopSignals signals;
     Progress progress(false);

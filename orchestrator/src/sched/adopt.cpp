@@ -8,7 +8,7 @@
 namespace gridfree {
 
 std::vector<ClaimedJob> adopt_stale_jobs(Store& store, Executor& executor, const std::string& owner,
-                                         const std::string& prefix) {
+                                         double timeout_s, const std::string& prefix) {
   std::vector<ClaimedJob> adopted;
   for (auto& a : store.take_over_stale([](const std::string& o) { return owner_alive(o); }, owner, prefix)) {
     JobLaunch launch;
@@ -16,6 +16,7 @@ std::vector<ClaimedJob> adopt_stale_jobs(Store& store, Executor& executor, const
     launch.job_hash = a.job.job_hash;
     launch.run_dir = a.run_dir;
     launch.cells = a.job.cells;
+    launch.timeout_s = timeout_s;
     if (!a.run_dir.empty() && executor.adopt(launch, a.external_id)) {
       adopted.push_back(std::move(a.job));
     } else {

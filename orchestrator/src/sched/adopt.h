@@ -15,8 +15,9 @@
 namespace gridfree {
 
 // Takes over the stale jobs `executor` can watch; the others stay for
-// recover_stale_jobs (requeued). Returns the adopted jobs for run_scheduler.
+// recover_stale_jobs (requeued). `timeout_s` (0 = none) applies to their run
+// time as to new jobs. Returns the adopted jobs for run_scheduler.
 std::vector<ClaimedJob> adopt_stale_jobs(Store& store, Executor& executor, const std::string& owner,
-                                         const std::string& prefix = "slurm:");
+                                         double timeout_s = 0, const std::string& prefix = "slurm:");
 
 }  // namespace gridfree

@@ -291,4 +291,26 @@ TEST_F(SlurmCluster, TheTimeoutCountsRunTimeNotTimeInTheQueue) {
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 4);
 }
 
+// Bad settings are refused before anything is submitted or any database is
+// made (no cluster needed).
+TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("slurm_test", "settings");
+  std::ofstream(dir / "profile.json") << R"({"partition": "p", "mem_gb": 4})";
+  const std::string study = quote((kSource / "studies/quickstart.json").string());
+  const std::string db = " --db " + quote((dir / "g.sqlite").string());
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--executor slurm --slurm-profile " + quote((dir / "profile.json").string()), "slurm-profile.mem_gb"},
+      {"--executor slurm --slurm-profile " + quote((dir / "missing.json").string()), "--slurm-profile"},
+      {"--executor slurm --mem -5", "--mem"},
+      {"--executor slurm --cpus-per-task 0", "--cpus-per-task"},
+      {"--executor slurm --sbatch-arg=--array=1-9", "--sbatch-arg"},
+      {"--executor pbs", "--executor"}};
+  for (const auto& [flags, field] : cases) {
+    const auto r = run_command(quote(kGridfree.string()) + " run " + study + db + " " + flags, dir / "err.txt");
+    EXPECT_EQ(r.exit_code, 2) << flags << ": " << r.err;
+    EXPECT_NE(r.err.find(field), std::string::npos) << flags << ": " << r.err;
+    EXPECT_FALSE(fs::exists(dir / "g.sqlite")) << flags;
+  }
+}
+
 }  // namespace
