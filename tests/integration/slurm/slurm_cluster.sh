@@ -47,7 +47,12 @@ ctld_up() { SLURM_CONF=$conf scontrol ping 2>/dev/null | grep -q UP; }
 
 start_ctld() {
   slurmctld -f "$conf" -i -L "$dir/slurmctld.log"
-  wait_for 20 ctld_up || { echo "slurmctld did not answer; log:" >&2; tail -20 "$dir/slurmctld.log" >&2; exit 1; }
+  wait_for 30 ctld_up || {
+    echo "slurmctld did not answer; log:" >&2
+    tail -20 "$dir/slurmctld.log" >&2
+    "$0" stop "$dir"
+    exit 1
+  }
 }
 
 case $cmd in
@@ -63,7 +68,7 @@ start)
   mkdir -p "$dir/spool/ctld" "$short/d" "$dir/munge"
   chmod 700 "$dir/munge"
   [ -f "$dir/munge/munge.key" ] || { dd if=/dev/urandom of="$dir/munge/munge.key" bs=1024 count=1 2>/dev/null; chmod 400 "$dir/munge/munge.key"; }
-  port=$((20000 + ($$ % 20000)))
+  port=$((20000 + ($$ % 20000) / 2 * 2))  # two ports: even and odd, so neighbouring PIDs do not collide
   node=gf$port
   # Eight CPUs or the real count if larger (config_overrides lets slurmd
   # believe the configuration), so that -j 8 runs eight tiny jobs at once.
@@ -117,7 +122,12 @@ CONF
   wait_for 10 test -S "$short/munge.socket"
   start_ctld
   slurmd -f "$conf" -N "$node" -L "$dir/slurmd.log"
-  wait_for 30 node_idle || { echo "node never became idle; logs:" >&2; tail -20 "$dir/slurmd.log" "$dir/slurmctld.log" >&2; exit 1; }
+  wait_for 60 node_idle || {
+    echo "node never became idle; logs:" >&2
+    tail -20 "$dir/slurmd.log" "$dir/slurmctld.log" >&2
+    "$0" stop "$dir"
+    exit 1
+  }
   echo "export SLURM_CONF=$conf"
   ;;
 stop)

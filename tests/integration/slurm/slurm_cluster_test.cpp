@@ -73,9 +73,9 @@ class SlurmCluster : public ::testing::Test {
     cluster_ = dir_ / "cluster";
     work_ = dir_ / "with space";  // every path the batch script sees has a space in it
     fs::create_directories(work_);
+    started_ = true;  // TearDown stops whatever did start
     const auto r = run_command(quote(kCluster.string()) + " start " + quote(cluster_.string()), dir_ / "start.err");
     ASSERT_EQ(r.exit_code, 0) << "cluster did not start: " << r.err;
-    started_ = true;
     setenv("SLURM_CONF", (cluster_ / "slurm.conf").c_str(), 1);
     setenv("GRIDFREE_WORKER", kFake.c_str(), 1);
     setenv("GRIDFREE_FAKE_LOG", (dir_ / "solves.log").c_str(), 1);
