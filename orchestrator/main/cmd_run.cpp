@@ -12,6 +12,7 @@
 #include "cmd_study.h"
 #include "executor_flags.h"
 #include "core/exit_codes.h"
+#include "core/input_error.h"
 #include "sched/adopt.h"
 #include "sched/series_finish.h"
 #include "sched/stop_signal.h"
@@ -43,7 +44,10 @@ int run_study(const RunOptions& ro) {
   const Study study = parse_study(ro.study_file);
   const ExpandedStudy ex = expand(study);
   auto options = scheduler_options(ro.db, ro.jobs, ro.timeout_s, ro.out);
-  auto executor = make_executor(ro.executor, ro.db, ro.jobs, options);
+  const bool has_slurm = study.definition.is_object() && study.definition.contains("slurm");
+  if (has_slurm && ro.executor.kind != "slurm")
+    throw InputError("/slurm", "Slurm settings need --executor slurm");
+  auto executor = make_executor(ro.executor, ro.db, ro.jobs, options, has_slurm ? &study.definition["slurm"] : nullptr);
   // 2. Submit (or resume).
   Store store(ro.db, true);
   const SubmitResult sub = submit_study(store, study, ex);

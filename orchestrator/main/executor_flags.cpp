@@ -28,7 +28,7 @@ void add_executor_flags(CLI::App* sub, ExecutorFlags& f) {
 }
 
 std::unique_ptr<Executor> make_executor(const ExecutorFlags& f, const std::string& db, int jobs,
-                                        SchedulerOptions& options) {
+                                        SchedulerOptions& options, const nlohmann::json* study_slurm) {
   const auto worker = default_worker_path();
   if (f.kind == "local") {
     if (!f.profile.empty()) throw InputError("--slurm-profile", "only with --executor slurm");
@@ -39,6 +39,7 @@ std::unique_ptr<Executor> make_executor(const ExecutorFlags& f, const std::strin
   }
   if (f.kind != "slurm") throw InputError("--executor", "unknown executor '" + f.kind + "'; valid: local, slurm");
   SlurmSettings s = f.profile.empty() ? SlurmSettings{} : read_slurm_profile(f.profile);
+  if (study_slurm != nullptr) s = merge(s, slurm_settings_from_json(*study_slurm, "/slurm"));
   SlurmSettings flags = f.slurm;
   if (f.margin != 0) flags.margin = f.margin;
   s = merge(s, flags);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "exec/executor.h"
 #include "exec/slurm_settings.h"
@@ -25,7 +26,8 @@ void add_executor_flags(CLI::App* sub, ExecutorFlags& flags);
 // The executor the flags name, with `options` adjusted to it: for Slurm,
 // jobs in flight = max_queued, -j = tasks running at once (the array
 // throttle), threads = cpus per task, run folders in runs_dir if given.
+// `study_slurm`: the study's "slurm" object, or null (profile < study < flags).
 std::unique_ptr<Executor> make_executor(const ExecutorFlags& flags, const std::string& db, int jobs,
-                                        SchedulerOptions& options);
+                                        SchedulerOptions& options, const nlohmann::json* study_slurm = nullptr);
 
 }  // namespace gridfree::cli

@@ -33,7 +33,12 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded) {
     auto st = db_.prepare("SELECT id, definition_json, status FROM studies WHERE name = ?");
     st.bind_all(study.name);
     if (st.step()) {
-      if (nlohmann::json::parse(st.as_text(1)) != study.definition)
+      // Where it runs (the "slurm" settings) is not what the study is.
+      auto same = [](nlohmann::json d) {
+        if (d.is_object()) d.erase("slurm");
+        return d;
+      };
+      if (same(nlohmann::json::parse(st.as_text(1))) != same(study.definition))
         throw InputError("/name", "a different study named '" + study.name +
                                       "' is already in " + file_.filename().string() +
                                       "; rename the study or use another --db");

@@ -123,7 +123,8 @@ class SlurmCluster : public ::testing::Test {
   }
 
   // A study of `cases` (the fake worker's modes) on four grids each.
-  fs::path study(const std::string& name, const std::vector<std::string>& cases) {
+  fs::path study(const std::string& name, const std::vector<std::string>& cases,
+               const nlohmann::json& slurm = nullptr) {
     std::ifstream in(kSource / "studies/quickstart.json");
     auto doc = nlohmann::json::parse(in);
     doc["name"] = name;
@@ -133,6 +134,7 @@ class SlurmCluster : public ::testing::Test {
     doc["factors"] = {{"convection", {"superbee"}}, {"fwhm_dp", {6}}, {"drag", {"bvk"}}};
     doc["design"] = "factorial";
     doc["grids"] = {{"delta_star", {5.0, 4.0, 3.3, 2.5}}};
+    if (!slurm.is_null()) doc["slurm"] = slurm;
     const auto file = work_ / (name + ".json");
     std::ofstream(file) << doc.dump(2);
     return file;
@@ -251,9 +253,9 @@ TEST_F(SlurmCluster, ControllerDownAtSubmitAndMidStudyCostsNoAttempt) {
 }
 
 TEST_F(SlurmCluster, ABadPartitionFailsFastWithSbatchsWordsAndRetryRecovers) {
-  const auto file = study("badpart", {"ok_a"});
-  auto r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) +
-                    " --executor slurm --partition nope");
+  // The partition comes from the study's own "slurm" settings.
+  const auto file = study("badpart", {"ok_a"}, {{"partition", "nope"}});
+  auto r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm");
   EXPECT_EQ(r.exit_code, 3) << r.out;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE reason LIKE '%Invalid partition name specified%'"), 4)
       << sql("SELECT reason FROM results");
@@ -262,6 +264,7 @@ TEST_F(SlurmCluster, ABadPartitionFailsFastWithSbatchsWordsAndRetryRecovers) {
   r = gridfree("retry badpart --db " + quote(db().string()));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("requeued 4 failed job(s)"), std::string::npos) << r.out;
+  // A flag overrides the study (profile < study < flags).
   r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm --partition debug");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 4);
@@ -296,7 +299,13 @@ TEST_F(SlurmCluster, TheTimeoutCountsRunTimeNotTimeInTheQueue) {
 TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("slurm_test", "settings");
   std::ofstream(dir / "profile.json") << R"({"partition": "p", "mem_gb": 4})";
-  const std::string study = quote((kSource / "studies/quickstart.json").string());
+  std::ifstream in(kSource / "studies/quickstart.json");
+  auto doc = nlohmann::json::parse(in);
+  std::ofstream(dir / "plain.json") << doc.dump();
+  doc["slurm"] = {{"partition", "p"}};
+  std::ofstream(dir / "with_slurm.json") << doc.dump();
+  doc["slurm"] = {{"partiton", "p"}};
+  std::ofstream(dir / "misspelt.json") << doc.dump();
   const std::string db = " --db " + quote((dir / "g.sqlite").string());
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--executor slurm --slurm-profile " + quote((dir / "profile.json").string()), "slurm-profile.mem_gb"},
@@ -304,13 +313,21 @@ TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
       {"--executor slurm --mem -5", "--mem"},
       {"--executor slurm --cpus-per-task 0", "--cpus-per-task"},
       {"--executor slurm --sbatch-arg=--array=1-9", "--sbatch-arg"},
-      {"--executor pbs", "--executor"}};
+      {"--executor pbs", "--executor"},
+      {"", "/slurm"}};  // a study with Slurm settings, run locally
   for (const auto& [flags, field] : cases) {
-    const auto r = run_command(quote(kGridfree.string()) + " run " + study + db + " " + flags, dir / "err.txt");
+    const auto file = dir / (flags.empty() ? "with_slurm.json" : "plain.json");
+    const auto r = run_command(quote(kGridfree.string()) + " run " + quote(file.string()) + db + " " + flags,
+                               dir / "err.txt");
     EXPECT_EQ(r.exit_code, 2) << flags << ": " << r.err;
     EXPECT_NE(r.err.find(field), std::string::npos) << flags << ": " << r.err;
     EXPECT_FALSE(fs::exists(dir / "g.sqlite")) << flags;
   }
+  const auto r = run_command(quote(kGridfree.string()) + " run " + quote((dir / "misspelt.json").string()) + db +
+                                 " --executor slurm",
+                             dir / "err.txt");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("/slurm.partiton"), std::string::npos) << r.err;
 }
 
 }  // namespace
