@@ -27,11 +27,36 @@ void add_executor_flags(CLI::App* sub, ExecutorFlags& f) {
   sub->add_option("--margin", f.margin, "cost-model estimate x margin = default --time/--mem (default 3)");
 }
 
+namespace {
+
+// The first Slurm flag given ("" if none): refused with the local executor.
+std::string first_slurm_flag(const ExecutorFlags& f) {
+  const SlurmSettings& s = f.slurm;
+  if (!f.profile.empty()) return "--slurm-profile";
+  if (!s.partition.empty()) return "--partition";
+  if (!s.account.empty()) return "--account";
+  if (!s.qos.empty()) return "--qos";
+  if (!s.constraint.empty()) return "--constraint";
+  if (s.time_minutes) return "--time";
+  if (s.mem_mb) return "--mem";
+  if (s.cpus_per_task) return "--cpus-per-task";
+  if (!s.sbatch_args.empty()) return "--sbatch-arg";
+  if (!s.setup.empty()) return "--setup";
+  if (!s.runs_dir.empty()) return "--runs-dir";
+  if (s.max_queued) return "--max-queued";
+  if (s.array_size) return "--array-size";
+  if (s.poll_s) return "--poll";
+  if (f.margin != 0) return "--margin";
+  return "";
+}
+
+}  // namespace
+
 std::unique_ptr<Executor> make_executor(const ExecutorFlags& f, const std::string& db, int jobs,
                                         SchedulerOptions& options, const nlohmann::json* study_slurm) {
   const auto worker = default_worker_path();
   if (f.kind == "local") {
-    if (!f.profile.empty()) throw InputError("--slurm-profile", "only with --executor slurm");
+    if (const auto flag = first_slurm_flag(f); !flag.empty()) throw InputError(flag, "only with --executor slurm");
     std::error_code ec;
     if (!std::filesystem::exists(worker, ec))
       throw std::runtime_error("worker executable not found: " + worker.string() + " (set GRIDFREE_WORKER)");

@@ -314,6 +314,7 @@ TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
       {"--executor slurm --cpus-per-task 0", "--cpus-per-task"},
       {"--executor slurm --sbatch-arg=--array=1-9", "--sbatch-arg"},
       {"--executor pbs", "--executor"},
+      {"--partition debug", "--partition"},  // a Slurm flag without --executor slurm
       {"", "/slurm"}};  // a study with Slurm settings, run locally
   for (const auto& [flags, field] : cases) {
     const auto file = dir / (flags.empty() ? "with_slurm.json" : "plain.json");
