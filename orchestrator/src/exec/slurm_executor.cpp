@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "exec/process_run.h"
+#include "exec/slurm_exit.h"
 #include "exec/slurm_faults.h"
 #include "exec/slurm_queue.h"
 #include "study/study_plan.h"
@@ -29,13 +30,6 @@ long ladder(double v) {
   long r = 1;
   while (r < v) r *= 2;
   return r;
-}
-
-std::optional<int> read_exit_code(const std::filesystem::path& dir) {
-  std::ifstream in(dir / "exit_code");
-  int code = 0;
-  if (in >> code) return code;
-  return std::nullopt;
 }
 
 }  // namespace
@@ -196,57 +190,12 @@ void SlurmExecutor::finish(std::map<long long, Task>::iterator it, JobExit e) {
 }
 
 JobExit SlurmExecutor::exit_of(const Task& t) {
-  JobExit e;
-  e.job_id = t.launch.job_id;
-  e.run_dir = t.launch.run_dir;
-  e.wall_s = t.used_s;
-  if (auto code = read_exit_code(t.launch.run_dir)) {
-    e.how = JobExit::How::kExited;
-    e.code = *code;
-    return e;
-  }
-  // The script never wrote its exit code: ask the accounting, if there is one.
-  const ProcessOutput acct = run_process({"sacct", "-n", "-P", "-X", "-o", "State,ExitCode", "-j", t.slurm_id});
-  const std::string line = acct.out.substr(0, acct.out.find('\n'));
-  if (const auto bar = line.find('|'); acct.exit_code == 0 && bar != std::string::npos) {
-    const std::string state = line.substr(0, bar), exit = line.substr(bar + 1);
-    const auto colon = exit.find(':');
-    const int signal = colon == std::string::npos ? 0 : std::atoi(exit.c_str() + colon + 1);
-    if (state.rfind("TIMEOUT", 0) == 0) {
-      e.how = JobExit::How::kTimedOut;
-      e.detail = "Slurm time limit (sacct " + state + ")";
-    } else if (state.rfind("OUT_OF_ME", 0) == 0) {
-      e.how = JobExit::How::kLost;
-      e.detail = "Slurm memory limit (sacct OUT_OF_MEMORY)";
-    } else if (signal != 0) {
-      e.how = JobExit::How::kSignaled;
-      e.signal = signal;
-    } else if (state.rfind("COMPLETED", 0) == 0 || state.rfind("FAILED", 0) == 0) {
-      e.how = JobExit::How::kExited;
-      e.code = std::atoi(exit.c_str());
-    } else {
-      e.how = JobExit::How::kLost;
-      e.detail = "slurm job " + t.slurm_id + " ended " + state;
-    }
-    return e;
-  }
-  // No accounting: a result the worker wrote is still the answer.
-  if (std::filesystem::exists(t.launch.run_dir / "result.json")) {
-    e.how = JobExit::How::kExited;
-    e.code = 0;  // classify_exit reads the result's own status
-    std::ifstream in(t.launch.run_dir / "result.json");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (text.find("\"converged\"") == std::string::npos) e.code = 3;
-    return e;
-  }
-  const auto log = runs_root_ / "slurm";
-  e.detail = "slurm job " + t.slurm_id + " left the queue without an exit code or a result";
-  if (t.adopted && !t.seen) {
-    e.how = JobExit::How::kVanished;  // ended while nobody watched, no trace: run it again
-    return e;
-  }
-  e.how = JobExit::How::kLost;
-  return e;
+  JobExit base;
+  base.job_id = t.launch.job_id;
+  base.run_dir = t.launch.run_dir;
+  base.wall_s = t.used_s;
+  // Adopted and never listed by squeue: it ended while no gridfree watched.
+  return resolve_exit(base, t.slurm_id, t.adopted && !t.seen);
 }
 
 void SlurmExecutor::poll() {
