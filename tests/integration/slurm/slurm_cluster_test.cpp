@@ -216,6 +216,24 @@ TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
   EXPECT_EQ(count("SELECT MAX(attempts) FROM jobs"), 1);
 }
 
+TEST_F(SlurmCluster, AKilledDaemonsJobsAreAdoptedByTheNextDaemon) {
+  const auto file = study("daemon", {"ok_a", "ok_b"});
+  ASSERT_EQ(gridfree("submit " + quote(file.string()) + " --db " + quote(db().string())).exit_code, 0);
+  const std::string args = "daemon --db " + quote(db().string()) + " --executor slurm -j 2";
+  const pid_t first = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1");
+  ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") >= 2; }, 60));
+  kill(first, SIGKILL);
+  waitpid(first, nullptr, 0);
+  const pid_t second = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1");
+  EXPECT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") == 8; }, 60));
+  kill(second, SIGTERM);
+  int status = 0;
+  EXPECT_TRUE(wait_until([&] { return waitpid(second, &status, WNOHANG) == second; }, 20));
+  EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 8);
+  expect_each_job_solved_once(8);
+  EXPECT_EQ(slurm_jobs_ended(), 8);
+}
+
 TEST_F(SlurmCluster, JobsPurgedFromTheControllerAreResolvedFromTheRunFolder) {
   const auto file = study("purged", {"ok_a"});
   const std::string args = "run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 4";
