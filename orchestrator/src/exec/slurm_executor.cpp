@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <thread>
 
 #include <spdlog/spdlog.h>
@@ -62,6 +63,7 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
 
 void SlurmExecutor::start(const JobLaunch& job) {
   std::filesystem::remove(job.run_dir / "exit_code");
+  std::filesystem::remove(job.run_dir / "slurm_submit");
   unsent_.push_back(job);
 }
 
@@ -106,6 +108,10 @@ void SlurmExecutor::submit_group(const std::vector<JobLaunch>& group, const Slur
     out << array_script(worker_, a, settings_.setup);
     if (!out) throw std::runtime_error("cannot write " + script.string());
   }
+  // Where each job went, before sbatch: a process killed between sbatch and
+  // recording the id leaves this for the next one to find the job by.
+  for (std::size_t i = 0; i < group.size(); ++i)
+    std::ofstream(group[i].run_dir / "slurm_submit", std::ios::trunc) << script.string() << '\n' << i << '\n';
   const ProcessOutput r = run_process(sbatch_command(a, settings_, script, dir));
   const std::string id = r.out.substr(0, r.out.find_first_of(";\n"));
   const bool ok = r.exit_code == 0 && !id.empty() && id.find_first_not_of("0123456789") == std::string::npos;
@@ -139,7 +145,32 @@ void SlurmExecutor::submit_group(const std::vector<JobLaunch>& group, const Slur
   }
 }
 
-bool SlurmExecutor::adopt(const JobLaunch& job, const std::string& external_id) {
+std::optional<std::string> SlurmExecutor::find_unrecorded(const JobLaunch& job) {
+  std::ifstream in(job.run_dir / "slurm_submit");
+  std::string script, index;
+  if (!std::getline(in, script) || !std::getline(in, index)) return std::nullopt;  // never submitted
+  const ProcessOutput q = run_process({"squeue", "--me", "-h", "-r", "-o", "%i|%o"});
+  std::istringstream lines(q.out);
+  for (std::string line; std::getline(lines, line);) {
+    const auto bar = line.find('|');
+    if (bar == std::string::npos || line.substr(bar + 1) != script) continue;
+    const std::string id = line.substr(0, bar);
+    if (id.size() > index.size() + 1 && id.compare(id.size() - index.size() - 1, std::string::npos, "_" + index) == 0)
+      return id;
+  }
+  // Not in the queue: it ran while nobody watched if it left its traces.
+  if (read_exit_code(job.run_dir) || exit_code_from_result(job.run_dir / "result.json"))
+    return "unrecorded";
+  return std::nullopt;
+}
+
+bool SlurmExecutor::adopt(const JobLaunch& job, const std::string& given_id) {
+  std::string external_id = given_id;
+  if (external_id.empty()) {  // submitted (perhaps) but never recorded
+    const auto found = find_unrecorded(job);
+    if (!found) return false;
+    external_id = "slurm:" + *found;
+  }
   if (external_id.rfind("slurm:", 0) != 0 || external_id.size() <= 6) return false;
   Task t;
   t.launch = job;

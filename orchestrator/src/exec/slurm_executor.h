@@ -13,7 +13,10 @@
 //             with Slurm's own words;
 //   timeout   counts run time (squeue's TimeUsed), not time in the queue,
 //             and becomes `--time` unless the settings give one;
-//   adopt()   takes over a task submitted by an earlier (crashed) process.
+//   adopt()   takes over a task submitted by an earlier (crashed) process,
+//             found by its recorded id, or by <run_dir>/slurm_submit (script
+//             and task index, written before sbatch) when the id was not
+//             recorded yet.
 //
 // The Slurm commands are found on PATH.
 #pragma once
@@ -66,6 +69,10 @@ class SlurmExecutor : public Executor {
   JobExit exit_of(const Task& t);
   SlurmArray shape_of(const JobLaunch& job) const;
   void note(const Task& t);
+  // The Slurm id of a job submitted but not recorded (its run folder's
+  // slurm_submit file matched against squeue's commands); "unrecorded" when
+  // it already ended, leaving an exit code or result; nullopt if not found.
+  std::optional<std::string> find_unrecorded(const JobLaunch& job);
 
   std::filesystem::path worker_, runs_root_;
   SlurmSettings settings_;

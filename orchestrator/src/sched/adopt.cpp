@@ -20,7 +20,9 @@ std::vector<ClaimedJob> adopt_stale_jobs(Store& store, Executor& executor, const
     if (!a.run_dir.empty() && executor.adopt(launch, a.external_id)) {
       adopted.push_back(std::move(a.job));
     } else {
-      store.release(a.job.job_id, owner, "requeued: " + a.external_id + " cannot be watched by this executor");
+      store.release(a.job.job_id, owner,
+                    a.external_id.empty() ? "requeued: never submitted"
+                                          : "requeued: " + a.external_id + " cannot be watched by this executor");
     }
   }
   if (!adopted.empty()) spdlog::info("adopted {} job(s) left in the queue by a process that is gone", adopted.size());

@@ -130,7 +130,8 @@ class Store {
   int requeue_stale(const std::function<bool(const std::string& owner)>& alive);
 
   // Adoption after a crash (store_adopt.cpp): running jobs whose owner is
-  // gone and whose external id starts with `prefix` ("slurm:") become
+  // gone and whose external id starts with `prefix` ("slurm:"), or is not
+  // recorded yet (killed between submission and recording), become
   // `owner`'s, attempts unchanged, in one transaction. Returned with their
   // external id and run folder so the executor can watch them again.
   struct Adopted {

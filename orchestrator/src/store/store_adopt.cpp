@@ -10,9 +10,10 @@ std::vector<Store::Adopted> Store::take_over_stale(const std::function<bool(cons
   std::vector<Adopted> out;
   {
     auto st = db_.prepare(
-        "SELECT j.id, COALESCE(j.owner,''), j.external_id, j.job_hash, j.spec_json, j.attempts, j.nx, j.ny, j.nz, "
+        "SELECT j.id, COALESCE(j.owner,''), COALESCE(j.external_id,''), j.job_hash, j.spec_json, j.attempts, j.nx, j.ny, j.nz, "
         "COALESCE(j.result_path,''), (SELECT study_id FROM study_jobs WHERE job_id = j.id ORDER BY study_id LIMIT 1) "
-        "FROM jobs j WHERE j.status = 'running' AND substr(COALESCE(j.external_id,''), 1, length(?1)) = ?1");
+        "FROM jobs j WHERE j.status = 'running' "
+        "AND (j.external_id IS NULL OR substr(j.external_id, 1, length(?1)) = ?1)");
     st.bind_all(prefix);
     while (st.step()) {
       if (alive(st.as_text(1))) continue;

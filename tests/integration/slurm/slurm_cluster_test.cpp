@@ -234,6 +234,22 @@ TEST_F(SlurmCluster, AKilledDaemonsJobsAreAdoptedByTheNextDaemon) {
   EXPECT_EQ(slurm_jobs_ended(), 8);
 }
 
+TEST_F(SlurmCluster, JobsSubmittedButNotRecordedAreFoundInTheQueue) {
+  const auto file = study("unrecorded", {"ok_a"});
+  const std::string args = "run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 1";
+  const pid_t pid = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1");
+  ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") >= 1; }, 60));
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  // As if killed between sbatch's answer and the transaction recording it.
+  sql("UPDATE jobs SET external_id = NULL WHERE status = 'running'");
+  const auto r = gridfree(args, "GRIDFREE_FAKE_SLEEP=1");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 4);
+  expect_each_job_solved_once(4);
+  EXPECT_EQ(slurm_jobs_ended(), 4);
+}
+
 TEST_F(SlurmCluster, JobsPurgedFromTheControllerAreResolvedFromTheRunFolder) {
   const auto file = study("purged", {"ok_a"});
   const std::string args = "run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 4";

@@ -43,26 +43,33 @@ long long scalar(Store& store, const std::string& sql) {
 
 TEST(StoreAdopt, OnlyStaleJobsWithAQueueIdAreTakenOverAttemptsUnchanged) {
   Store store(temp_db("take"));
-  auto [s, ex] = make_study(3);
+  auto [s, ex] = make_study(4);
   const auto sub = store.submit(s, ex);
   const std::string dead = "gone:1:1", live = "here:2:2";
   auto j1 = store.claim_next(sub.study_id, dead);  // in Slurm
   auto j2 = store.claim_next(sub.study_id, dead);  // claimed, never submitted
   auto j3 = store.claim_next(sub.study_id, live);  // another live process's
-  ASSERT_TRUE(j1 && j2 && j3);
+  auto j4 = store.claim_next(sub.study_id, dead);  // a local worker's
+  ASSERT_TRUE(j1 && j2 && j3 && j4);
+  store.set_job_external_id(j4->job_id, "local:gone:9:9");
   store.set_job_paths(j1->job_id, "/runs/h0/result.json");
   store.set_queue_state(j1->job_id, "slurm:7_0", "PENDING", "Priority");
   store.set_queue_state(j3->job_id, "slurm:7_2", "RUNNING", "");
   const auto alive = [&](const std::string& o) { return o == live; };
+  store.set_job_external_id(j3->job_id, "slurm:7_2");
   const auto taken = store.take_over_stale(alive, "me:3:3", "slurm:");
-  ASSERT_EQ(taken.size(), 1u);
-  EXPECT_EQ(taken[0].job.job_id, j1->job_id);
-  EXPECT_EQ(taken[0].external_id, "slurm:7_0");
-  EXPECT_EQ(taken[0].run_dir, fs::path("/runs/h0"));
-  EXPECT_EQ(taken[0].job.attempts, 1);
-  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE owner = 'me:3:3' AND status = 'running'"), 1);
-  // The never-submitted one is left for requeue_stale.
-  EXPECT_EQ(store.requeue_stale([&](const std::string& o) { return o == live || o == "me:3:3"; }), 1);
+  // j1 (recorded id) and j2 (no id yet: perhaps submitted, not recorded);
+  // j3's owner lives; j4 is local (recover_stale_jobs requeues it and kills
+  // its orphan).
+  ASSERT_EQ(taken.size(), 2u);
+  const auto& a1 = taken[0].job.job_id == j1->job_id ? taken[0] : taken[1];
+  const auto& a2 = taken[0].job.job_id == j1->job_id ? taken[1] : taken[0];
+  EXPECT_EQ(a1.external_id, "slurm:7_0");
+  EXPECT_EQ(a1.run_dir, fs::path("/runs/h0"));
+  EXPECT_EQ(a1.job.attempts, 1);
+  EXPECT_EQ(a2.job.job_id, j2->job_id);
+  EXPECT_EQ(a2.external_id, "");
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE owner = 'me:3:3' AND status = 'running'"), 2);
   const auto q = store.queue_jobs(sub.study_id);
   ASSERT_EQ(q.size(), 2u);
   const auto& adopted = q[0].job_id == j1->job_id ? q[0] : q[1];
