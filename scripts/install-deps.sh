@@ -12,9 +12,11 @@ packages=(
   libcli11-dev libgtest-dev
 )
 # `install-deps.sh test` adds what only the tests need: headless Chromium
-# renders the HTML report once.
+# renders the HTML report once; a single-node Slurm (munge, slurmctld,
+# slurmd, started by tests/integration/slurm/slurm_cluster.sh) runs the
+# Slurm executor tests.
 if [[ "${1:-}" == "test" ]]; then
-  packages+=(chromium)
+  packages+=(chromium munge slurmctld slurmd slurm-client)
 fi
 # `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
 if [[ "${1:-}" == "fuzz" ]]; then

@@ -12,7 +12,10 @@
 #include <spdlog/spdlog.h>
 
 #include "cmd_study.h"
+#include "executor_flags.h"
 #include "core/exit_codes.h"
+#include "core/input_error.h"
+#include "sched/adopt.h"
 #include "sched/series_finish.h"
 #include "sched/stop_signal.h"
 
@@ -23,7 +26,7 @@ struct RunOptions {
   std::string study_file;
   std::string db = kDefaultDb;
   int jobs = default_jobs();
-  std::string executor = "local";
+  ExecutorFlags executor;
   double timeout_s = kDerivedTimeout;
   std::string out;
   bool replace = false;
@@ -49,10 +52,14 @@ int run_study(const RunOptions& ro) {
   const Study study = parse_study(ro.study_file);
   const ExpandedStudy ex = expand(study);
   auto options = scheduler_options(ro.db, ro.jobs, ro.timeout_s, ro.out);
-  auto executor = make_executor(ro.executor, ro.db);
+  const bool has_slurm = study.definition.is_object() && study.definition.contains("slurm");
+  if (has_slurm && ro.executor.kind != "slurm")
+    throw InputError("/slurm", "Slurm settings need --executor slurm");
+  auto executor = make_executor(ro.executor, ro.db, ro.jobs, options, has_slurm ? &study.definition["slurm"] : nullptr);
   // 2. Submit (or resume).
   Store store(ro.db, true);
   const SubmitResult sub = submit_study(store, study, ex, ro.replace);
+  const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
   recover_stale_jobs(store);
   // 3. Work the study until it is done.
   StopSignals signals;
@@ -60,7 +67,7 @@ int run_study(const RunOptions& ro) {
   options.study = sub.study_id;
   options.stop_requested = [&signals] { return signals.requested(); };
   options.progress = &progress;
-  const SchedulerSummary sum = run_scheduler(store, *executor, options);
+  const SchedulerSummary sum = run_scheduler(store, *executor, options, adopted);
   progress.finish();
   // 4. Report and exit code.
   finish_ready_series(store, sub.study_id);
@@ -88,7 +95,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   sub->add_option("STUDY", ro->study_file, "study JSON file")->required();
   sub->add_option("--db", ro->db, "SQLite database")->capture_default_str();
   sub->add_option("-j,--jobs", ro->jobs, "jobs at a time (default: cores)");
-  sub->add_option("--executor", ro->executor, "local | slurm")->capture_default_str();
+  add_executor_flags(sub, ro->executor);
   sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->add_option("--out", ro->out, "report folder (default reports/<study>)");
   sub->add_flag("--replace", ro->replace,
@@ -120,16 +127,17 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("daemon", "work every submitted study until SIGINT/SIGTERM");
   auto db = std::make_shared<std::string>(kDefaultDb);
   auto jobs = std::make_shared<int>(default_jobs());
-  auto executor_kind = std::make_shared<std::string>("local");
+  auto executor_flags = std::make_shared<ExecutorFlags>();
   auto timeout = std::make_shared<double>(kDerivedTimeout);
   sub->add_option("--db", *db, "SQLite database")->capture_default_str();
   sub->add_option("-j,--jobs", *jobs, "jobs at a time (default: cores)");
-  sub->add_option("--executor", *executor_kind, "local | slurm")->capture_default_str();
+  add_executor_flags(sub, *executor_flags);
   sub->add_option("--timeout", *timeout, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->callback([=, &exit_code] {
     auto options = scheduler_options(*db, *jobs, *timeout, {});
-    auto executor = make_executor(*executor_kind, *db);
+    auto executor = make_executor(*executor_flags, *db, *jobs, options);
     Store store(*db, true);
+    const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
     recover_stale_jobs(store);
     StopSignals signals;
     Progress progress(false);
@@ -137,7 +145,7 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
     options.stop_requested = [&signals] { return signals.requested(); };
     options.progress = &progress;
     spdlog::info("daemon: working {} with {} job(s) at a time (SIGINT/SIGTERM stops)", *db, *jobs);
-    const SchedulerSummary sum = run_scheduler(store, *executor, options);
+    const SchedulerSummary sum = run_scheduler(store, *executor, options, adopted);
     spdlog::info("daemon: stopped; {} job(s) finished this session, in-flight jobs requeued", sum.finished);
     if (sum.reports_failed > 0) spdlog::error("daemon: {} report(s) could not be written", sum.reports_failed);
     exit_code = to_int(sum.reports_failed > 0 ? ExitCode::kInternalError : ExitCode::kOk);

@@ -38,9 +38,17 @@ void add_status_command(CLI::App& app, int& exit_code) {
     std::optional<long long> id;
     if (!name->empty()) id = require_study(*store, *name);
     const auto rows = store->statuses(id);
+    const auto queue = id ? store->queue_jobs(*id) : std::vector<Store::QueuedJob>{};
     if (*json) {
       nlohmann::json out = nlohmann::json::array();
       for (const auto& s : rows) out.push_back(status_json(s));
+      if (id && !out.empty()) {  // Slurm jobs of the named study: id, state, pending reason
+        nlohmann::json q = nlohmann::json::array();
+        for (const auto& j : queue)
+          q.push_back({{"job", j.job_id}, {"grid", j.label}, {"slurm_id", j.external_id.substr(6)},
+                       {"state", j.state}, {"reason", j.reason}});
+        out[0]["slurm"] = q;
+      }
       std::cout << out.dump(2) << '\n';
     } else {
       std::printf("%-28s %-10s %6s %6s %7s %6s %6s %9s %8s\n", "study", "status", "jobs", "queued", "running",
@@ -48,6 +56,12 @@ void add_status_command(CLI::App& app, int& exit_code) {
       for (const auto& s : rows)
         std::printf("%-28s %-10s %6d %6d %7d %6d %6d %9d %4d/%-3d\n", s.name.c_str(), s.status.c_str(), s.jobs,
                     s.queued, s.running, s.done, s.failed, s.converged, s.series_done, s.series);
+      if (!queue.empty()) {
+        std::printf("\n%8s %-14s %-14s %-12s %s\n", "job", "grid", "slurm id", "state", "reason");
+        for (const auto& j : queue)
+          std::printf("%8lld %-14s %-14s %-12s %s\n", j.job_id, j.label.c_str(), j.external_id.substr(6).c_str(),
+                      j.state.c_str(), j.reason.c_str());
+      }
     }
     exit_code = to_int(ExitCode::kOk);
   });

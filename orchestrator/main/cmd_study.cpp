@@ -5,9 +5,7 @@
 #include <thread>
 
 #include "core/input_error.h"
-#include "exec/local_executor.h"
-#include "exec/slurm_executor.h"
-#include "exec/worker_path.h"
+#include "exec/executor.h"
 #include "commands.h"
 #include "store/owner.h"
 
@@ -23,6 +21,7 @@ void add_study_commands(CLI::App& app, int& exit_code) {
   add_report_command(app, exit_code);
   add_cancel_command(app, exit_code);
   add_delete_command(app, exit_code);
+  add_retry_command(app, exit_code);
 }
 
 void remove_run_folders(const std::filesystem::path& db, const std::vector<std::string>& job_hashes) {
@@ -44,18 +43,6 @@ std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db) {
   if (!std::filesystem::is_regular_file(db, ec))
     throw InputError("--db", "no database at '" + db.string() + "' (submit or run a study first)");
   return std::make_unique<Store>(db, false);
-}
-
-std::unique_ptr<Executor> make_executor(const std::string& kind, const std::filesystem::path& db) {
-  const auto worker = default_worker_path();
-  if (kind == "local") {
-    std::error_code ec;
-    if (!std::filesystem::exists(worker, ec))
-      throw std::runtime_error("worker executable not found: " + worker.string() + " (set GRIDFREE_WORKER)");
-    return std::make_unique<LocalExecutor>(worker);
-  }
-  if (kind == "slurm") return std::make_unique<SlurmExecutor>(worker, runs_root_for(db));
-  throw InputError("--executor", "unknown executor '" + kind + "'; valid: local, slurm");
 }
 
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,

@@ -28,6 +28,7 @@ void add_delete_command(CLI::App& app, int& exit_code);
 
 // Removes the run folders (<db>.runs/<job_hash>) of jobs the store removed.
 void remove_run_folders(const std::filesystem::path& db, const std::vector<std::string>& job_hashes);
+void add_retry_command(CLI::App& app, int& exit_code);
 
 inline constexpr const char* kDefaultDb = "gridfree.sqlite";
 
@@ -35,9 +36,6 @@ int default_jobs();  // number of cores
 
 // Opens an existing database (throws InputError naming --db if missing).
 std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db);
-
-// The executor named by --executor ("local" | "slurm"); throws InputError otherwise.
-std::unique_ptr<Executor> make_executor(const std::string& kind, const std::filesystem::path& db);
 
 // --timeout value meaning "derived from the cost model" (sched/job_timeout.h).
 inline constexpr double kDerivedTimeout = -1;

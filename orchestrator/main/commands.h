@@ -7,6 +7,6 @@
 namespace gridfree::cli {
 
 void add_extrapolate_command(CLI::App& app, int& exit_code);
-void add_study_commands(CLI::App& app, int& exit_code);  // validate, plan, run, submit, daemon, status, report, cancel, delete
+void add_study_commands(CLI::App& app, int& exit_code);  // validate, plan, run, submit, daemon, status, report, cancel, delete, retry
 
 }  // namespace gridfree::cli

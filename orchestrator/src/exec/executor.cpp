@@ -25,6 +25,10 @@ std::string describe(const JobExit& e) {
       return "could not start the worker: " + e.detail;
     case JobExit::How::kLost:
       return "lost: " + e.detail;
+    case JobExit::How::kRefused:
+      return "refused by the cluster: " + e.detail;
+    case JobExit::How::kVanished:
+      return "vanished: " + e.detail;
   }
   return "unknown";
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,10 +23,22 @@ struct JobLaunch {
   // records external_id() first, so no worker runs that a restart could not
   // find. If the caller dies before releasing, the worker never runs.
   bool hold = false;
+  std::string name;                // for people: study, series, grid (Slurm job name)
+  std::array<int, 3> cells{};      // grid size (cost-model estimates)
+};
+
+// A job's state in an external queue, for `status` (Slurm: id, state, reason).
+struct JobUpdate {
+  long long job_id = 0;
+  std::string external_id;         // "slurm:1234_5"
+  std::string state, reason;       // PENDING / Priority, RUNNING / None, ...
 };
 
 struct JobExit {
-  enum class How { kExited, kSignaled, kTimedOut, kKilled, kLaunchFailed, kLost };
+  // kRefused: the cluster will not run it (bad partition, a limit the job
+  // exceeds): final. kVanished: gone without a trace while nobody watched
+  // (adopted after a restart): run again without spending an attempt.
+  enum class How { kExited, kSignaled, kTimedOut, kKilled, kLaunchFailed, kLost, kRefused, kVanished };
   long long job_id = 0;
   How how = How::kExited;
   int code = 0;                    // exit code (kExited)
@@ -52,6 +65,14 @@ class Executor {
   virtual std::string external_id(long long job_id) const = 0;
   // Lets a job started with `hold` run (no-op for executors that cannot hold).
   virtual void release(long long /*job_id*/) {}
+  // Submits what start() has gathered (executors that batch jobs, such as
+  // Slurm arrays); called after a round of start()s.
+  virtual void flush() {}
+  // Ids assigned and queue states changed since the last call.
+  virtual std::vector<JobUpdate> take_updates() { return {}; }
+  // Takes over a job started by an earlier process from its external id;
+  // false when this executor cannot (then the job is requeued).
+  virtual bool adopt(const JobLaunch& /*job*/, const std::string& /*external_id*/) { return false; }
 };
 
 // The worker command line (docs/INTERFACE.md §2) for a run directory.

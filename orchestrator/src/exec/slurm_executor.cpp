@@ -1,152 +1,299 @@
 // SlurmExecutor (see slurm_executor.h).
 #include "exec/slurm_executor.h"
 
-#include <sys/wait.h>
-
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
-#include <set>
 #include <sstream>
 #include <thread>
 
+#include <spdlog/spdlog.h>
+
+#include "exec/process_run.h"
+#include "exec/slurm_exit.h"
+#include "exec/slurm_faults.h"
+#include "exec/slurm_queue.h"
+#include "study/study_plan.h"
+
 namespace gridfree {
+namespace {
 
-std::string shell_quote(const std::string& w) {
-  std::string out = "'";
-  for (char c : w) {
-    if (c == '\'')
-      out += "'\\''";
-    else
-      out += c;
-  }
-  return out + "'";
+constexpr double kMinPollS = 0.5, kMaxPollS = 30.0;  // adaptive squeue interval bounds
+constexpr double kFileCheckS = 0.1;                  // exit_code files of running tasks
+constexpr double kMaxBackoffS = 60.0;                // transient submit faults
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-std::pair<int, std::string> run_capture(const std::string& command) {
-  std::string out;
-  FILE* p = popen((command + " 2>/dev/null").c_str(), "r");
-  if (p == nullptr) return {-1, out};
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, p) != nullptr) out += buf;
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+// Rounds up to 1, 2, 4, 8 ...: limits within a factor 2 share an array.
+long ladder(double v) {
+  long r = 1;
+  while (r < v) r *= 2;
+  return r;
 }
 
-std::string sbatch_script(const std::filesystem::path& worker, const JobLaunch& job) {
-  std::ostringstream s;
-  const auto dir = job.run_dir.string();
-  s << "#!/bin/sh\n"
-    << "#SBATCH --job-name=gridfree-" << job.job_hash.substr(0, 12) << "\n"
-    << "#SBATCH --output=" << dir << "/worker.log\n"
-    << "#SBATCH --cpus-per-task=" << std::max(1, job.threads) << "\n";
-  if (job.timeout_s > 0) s << "#SBATCH --time=" << static_cast<long>(std::ceil(job.timeout_s / 60.0)) << "\n";
-  std::string cmd;
-  for (const auto& a : worker_command(worker, job.run_dir, job.threads)) cmd += (cmd.empty() ? "" : " ") + shell_quote(a);
-  s << cmd << "\n"
-    << "code=$?\n"
-    << "echo $code > " << shell_quote(dir + "/exit_code.tmp") << " && mv " << shell_quote(dir + "/exit_code.tmp")
-    << " " << shell_quote(dir + "/exit_code") << "\n"
-    << "exit $code\n";
-  return s.str();
-}
+}  // namespace
 
-SlurmExecutor::SlurmExecutor(std::filesystem::path worker, std::filesystem::path runs_root, double poll_interval_s)
-    : worker_(std::move(worker)), runs_root_(std::move(runs_root)), poll_interval_s_(poll_interval_s) {}
+SlurmExecutor::SlurmExecutor(std::filesystem::path worker, std::filesystem::path runs_root, SlurmSettings settings,
+                             int slots)
+    : worker_(std::move(worker)), runs_root_(std::move(runs_root)), settings_(std::move(settings)),
+      slots_(std::max(1, slots)) {}
 
 SlurmExecutor::~SlurmExecutor() { kill_all(); }
 
+SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
+  SlurmArray a;
+  a.threads = std::max(1, job.threads);
+  a.cpus = settings_.cpus_per_task.value_or(a.threads);
+  a.throttle = slots_;
+  const bool sized = job.cells[0] > 0 && job.cells[1] > 0 && job.cells[2] > 0;
+  if (settings_.time_minutes)
+    a.time_minutes = static_cast<long>(std::ceil(*settings_.time_minutes));
+  else if (job.timeout_s > 0)  // Slurm's limit one minute past ours, so ours is the one that fires
+    a.time_minutes = static_cast<long>(std::ceil(job.timeout_s / 60.0)) + 1;
+  else if (sized)
+    a.time_minutes = ladder(std::max(5.0, settings_.margin * estimated_seconds(job.cells, a.cpus) / 60.0));
+  if (settings_.mem_mb)
+    a.mem_mb = static_cast<long>(std::ceil(*settings_.mem_mb));
+  else if (sized)
+    a.mem_mb = ladder(settings_.margin * estimated_memory_bytes(job.cells) / (1024.0 * 1024.0));
+  return a;
+}
+
 void SlurmExecutor::start(const JobLaunch& job) {
-  const auto script = job.run_dir / "job.sbatch";
   std::filesystem::remove(job.run_dir / "exit_code");
+  std::filesystem::remove(job.run_dir / "slurm_submit");
+  unsent_.push_back(job);
+}
+
+void SlurmExecutor::flush() {
+  if (!unsent_.empty() && Clock::now() >= retry_at_) submit_unsent();
+}
+
+void SlurmExecutor::submit_unsent() {
+  // Group by shape, keeping the claim order inside each group.
+  std::vector<std::pair<SlurmArray, std::vector<JobLaunch>>> groups;
+  const auto max_size = static_cast<std::size_t>(settings_.array_size.value_or(1000));
+  for (const auto& job : unsent_) {
+    const SlurmArray s = shape_of(job);
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) {
+      return x.first.cpus == s.cpus && x.first.threads == s.threads && x.first.time_minutes == s.time_minutes &&
+             x.first.mem_mb == s.mem_mb && x.second.size() < max_size;
+    });
+    if (g == groups.end()) groups.push_back({s, {job}});
+    else g->second.push_back(job);
+  }
+  unsent_.clear();
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    submit_group(groups[i].second, groups[i].first);
+    if (!unsent_.empty()) {  // a transient fault: keep the rest for later, in order
+      for (std::size_t k = i + 1; k < groups.size(); ++k)
+        unsent_.insert(unsent_.end(), groups[k].second.begin(), groups[k].second.end());
+      return;
+    }
+  }
+}
+
+void SlurmExecutor::submit_group(const std::vector<JobLaunch>& group, const SlurmArray& shape) {
+  SlurmArray a = shape;
+  a.name = group.front().name + (group.size() > 1 ? " +" + std::to_string(group.size() - 1) : "");
+  for (const auto& j : group) a.run_dirs.push_back(j.run_dir);
+  const auto dir = runs_root_ / "slurm";
+  std::filesystem::create_directories(dir);
+  const auto script = dir / (group.front().job_hash.substr(0, 16) + "-" + std::to_string(getpid()) + "-" +
+                             std::to_string(++array_counter_) + ".sbatch");
   {
     std::ofstream out(script, std::ios::trunc);
-    out << sbatch_script(worker_, job);
+    out << array_script(worker_, a, settings_.setup);
+    if (!out) throw std::runtime_error("cannot write " + script.string());
   }
-  const auto [rc, text] = run_capture("sbatch --parsable " + shell_quote(script.string()));
-  std::string id = text.substr(0, text.find_first_of(";\n"));
-  if (rc != 0 || id.empty()) {
-    JobExit e;
-    e.job_id = job.job_id;
-    e.how = JobExit::How::kLaunchFailed;
-    e.detail = "sbatch failed (exit " + std::to_string(rc) + ")";
-    e.run_dir = job.run_dir;
-    finished_.push_back(std::move(e));
+  // Where each job went, before sbatch: a process killed between sbatch and
+  // recording the id leaves this for the next one to find the job by.
+  for (std::size_t i = 0; i < group.size(); ++i)
+    std::ofstream(group[i].run_dir / "slurm_submit", std::ios::trunc) << script.string() << '\n' << i << '\n';
+  const ProcessOutput r = run_process(sbatch_command(a, settings_, script, dir));
+  const std::string id = r.out.substr(0, r.out.find_first_of(";\n"));
+  const bool ok = r.exit_code == 0 && !id.empty() && id.find_first_not_of("0123456789") == std::string::npos;
+  if (ok) {
+    backoff_s_ = 0;
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      Task t;
+      t.launch = group[i];
+      t.slurm_id = id + "_" + std::to_string(i);
+      t.polled_at = Clock::now();
+      note(t);
+      tasks_.emplace(group[i].job_id, std::move(t));
+    }
     return;
   }
-  jobs_[job.job_id] = SlurmJob{job.job_id, id, job.run_dir, Clock::now(), job.timeout_s};
+  const std::string msg = submit_message(r.exit_code, r.err.empty() ? r.out : r.err);
+  if (classify_submit_failure(r.exit_code, r.err, r.not_found) == SubmitFault::kTransient) {
+    backoff_s_ = std::min(kMaxBackoffS, backoff_s_ == 0 ? 1.0 : 2 * backoff_s_);
+    retry_at_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(backoff_s_));
+    spdlog::warn("sbatch failed for now ({}); {} job(s) wait, retry in {:.0f} s", msg, group.size(), backoff_s_);
+    unsent_.insert(unsent_.end(), group.begin(), group.end());
+    return;
+  }
+  for (const auto& j : group) {
+    JobExit e;
+    e.job_id = j.job_id;
+    e.how = JobExit::How::kRefused;
+    e.detail = msg;  // sbatch's own words ("sbatch: error: ...")
+    e.run_dir = j.run_dir;
+    finished_.push_back(std::move(e));
+  }
+}
+
+std::optional<std::string> SlurmExecutor::find_unrecorded(const JobLaunch& job) {
+  std::ifstream in(job.run_dir / "slurm_submit");
+  std::string script, index;
+  if (!std::getline(in, script) || !std::getline(in, index)) return std::nullopt;  // never submitted
+  const ProcessOutput q = run_process({"squeue", "--me", "-h", "-r", "-o", "%i|%o"});
+  std::istringstream lines(q.out);
+  for (std::string line; std::getline(lines, line);) {
+    const auto bar = line.find('|');
+    if (bar == std::string::npos || line.substr(bar + 1) != script) continue;
+    const std::string id = line.substr(0, bar);
+    if (id.size() > index.size() + 1 && id.compare(id.size() - index.size() - 1, std::string::npos, "_" + index) == 0)
+      return id;
+  }
+  // Not in the queue: it ran while nobody watched if it left its traces.
+  if (read_exit_code(job.run_dir) || exit_code_from_result(job.run_dir / "result.json"))
+    return "unrecorded";
+  return std::nullopt;
+}
+
+bool SlurmExecutor::adopt(const JobLaunch& job, const std::string& given_id) {
+  std::string external_id = given_id;
+  if (external_id.empty()) {  // submitted (perhaps) but never recorded
+    const auto found = find_unrecorded(job);
+    if (!found) return false;
+    external_id = "slurm:" + *found;
+  }
+  if (external_id.rfind("slurm:", 0) != 0 || external_id.size() <= 6) return false;
+  Task t;
+  t.launch = job;
+  t.slurm_id = external_id.substr(6);
+  t.adopted = true;
+  t.state = "ADOPTED";
+  t.polled_at = Clock::now();
+  tasks_.emplace(job.job_id, std::move(t));
+  last_poll_ = {};  // ask Slurm at once
+  return true;
 }
 
 std::string SlurmExecutor::external_id(long long job_id) const {
-  auto it = jobs_.find(job_id);
-  return it == jobs_.end() ? "" : "slurm:" + it->second.slurm_id;
+  auto it = tasks_.find(job_id);
+  return it == tasks_.end() ? "" : "slurm:" + it->second.slurm_id;
 }
 
-JobExit SlurmExecutor::exit_of(const SlurmJob& j, bool timed_out) {
-  JobExit e;
-  e.job_id = j.job_id;
-  e.run_dir = j.run_dir;
-  e.wall_s = std::chrono::duration<double>(Clock::now() - j.started).count();
-  if (timed_out) {
-    e.how = JobExit::How::kTimedOut;
-    e.detail = "no result after " + std::to_string(static_cast<long>(j.timeout_s)) + " s (scancel)";
-    return e;
+void SlurmExecutor::note(const Task& t) {
+  updates_.push_back({t.launch.job_id, "slurm:" + t.slurm_id, t.state, t.reason});
+}
+
+std::vector<JobUpdate> SlurmExecutor::take_updates() {
+  std::vector<JobUpdate> out;
+  out.swap(updates_);
+  return out;
+}
+
+double SlurmExecutor::poll_interval() const {
+  if (settings_.poll_s) return *settings_.poll_s;
+  // A quarter of the typical run time: short jobs are looked at often, hour-
+  // long ones every 30 s. Before any has finished: the fastest bound.
+  if (runs_seen_ == 0) return kMinPollS;
+  return std::clamp(mean_run_s_ / 4, kMinPollS, kMaxPollS);
+}
+
+void SlurmExecutor::finish(std::map<long long, Task>::iterator it, JobExit e) {
+  Task& t = it->second;
+  if (e.how == JobExit::How::kExited && t.state == "RUNNING") {
+    const double run_s = t.used_s + seconds_since(t.polled_at);
+    mean_run_s_ = (mean_run_s_ * runs_seen_ + run_s) / (runs_seen_ + 1);
+    ++runs_seen_;
   }
-  std::ifstream code_file(j.run_dir / "exit_code");
-  int code = 0;
-  if (code_file >> code) {
-    e.how = JobExit::How::kExited;
-    e.code = code;
-    return e;
-  }
-  // The script never got to write its exit code: ask the accounting.
-  const auto [rc, text] = run_capture("sacct -n -P -o State,ExitCode -j " + shell_quote(j.slurm_id));
-  std::string line = text.substr(0, text.find('\n'));
-  const auto bar = line.find('|');
-  if (rc != 0 || bar == std::string::npos) {
-    e.how = JobExit::How::kLost;
-    e.detail = "slurm job " + j.slurm_id + " left the queue without an exit code";
-    return e;
-  }
-  const std::string state = line.substr(0, bar), exit = line.substr(bar + 1);
-  const auto colon = exit.find(':');
-  const int signal = colon == std::string::npos ? 0 : std::atoi(exit.c_str() + colon + 1);
-  if (state.rfind("TIMEOUT", 0) == 0) {
-    e.how = JobExit::How::kTimedOut;
-    e.detail = "slurm " + state;
-  } else if (signal != 0) {
-    e.how = JobExit::How::kSignaled;
-    e.signal = signal;
-  } else if (state.rfind("COMPLETED", 0) == 0 || state.rfind("FAILED", 0) == 0) {
-    e.how = JobExit::How::kExited;
-    e.code = std::atoi(exit.c_str());
-  } else {
-    e.how = JobExit::How::kLost;
-    e.detail = "slurm state " + state;
-  }
-  return e;
+  t.state = "ENDED";  // left the queue, or about to
+  t.reason.clear();
+  note(t);
+  finished_.push_back(std::move(e));
+  tasks_.erase(it);
+}
+
+JobExit SlurmExecutor::exit_of(const Task& t) {
+  JobExit base;
+  base.job_id = t.launch.job_id;
+  base.run_dir = t.launch.run_dir;
+  base.wall_s = t.used_s;
+  // Adopted and never listed by squeue: it ended while no gridfree watched.
+  return resolve_exit(base, t.slurm_id, t.adopted && !t.seen);
 }
 
 void SlurmExecutor::poll() {
-  if (jobs_.empty()) return;
-  std::string ids;
-  for (const auto& [id, j] : jobs_) ids += (ids.empty() ? "" : ",") + j.slurm_id;
-  const auto [rc, text] = run_capture("squeue -h -o %i -j " + shell_quote(ids));
-  if (rc != 0) return;  // squeue unavailable for a moment: try again later
-  std::set<std::string> queued;
-  std::istringstream in(text);
-  for (std::string w; in >> w;) queued.insert(w);
+  if (tasks_.empty()) return;
+  const ProcessOutput r = run_process(squeue_command());
+  if (r.exit_code != 0) {
+    // Controller unreachable for a moment: nothing is known, nothing changes.
+    spdlog::warn("squeue failed ({}); will ask again", submit_message(r.exit_code, r.err));
+    return;
+  }
+  const auto queue = parse_squeue(r.out);
   const auto now = Clock::now();
-  for (auto it = jobs_.begin(); it != jobs_.end();) {
-    const SlurmJob& j = it->second;
-    const bool over = j.timeout_s > 0 && std::chrono::duration<double>(now - j.started).count() > j.timeout_s;
-    if (queued.count(j.slurm_id) != 0 && !over) {
-      ++it;
+  for (auto it = tasks_.begin(); it != tasks_.end();) {
+    Task& t = it->second;
+    auto q = queue.find(t.slurm_id);
+    if (q == queue.end()) {  // left the queue (finished, cancelled, purged)
+      auto next = std::next(it);
+      finish(it, exit_of(t));
+      it = next;
       continue;
     }
-    if (queued.count(j.slurm_id) != 0) run_capture("scancel " + shell_quote(j.slurm_id));
-    finished_.push_back(exit_of(j, queued.count(j.slurm_id) != 0));
-    it = jobs_.erase(it);
+    const bool changed = q->second.state != t.state || q->second.reason != t.reason;
+    t.state = q->second.state;
+    t.reason = q->second.reason;
+    t.used_s = q->second.used_s;
+    t.polled_at = now;
+    t.seen = true;
+    if (changed) note(t);
+    if (t.state == "PENDING" && never_startable(t.reason)) {
+      run_process({"scancel", t.slurm_id});
+      JobExit e{t.launch.job_id, JobExit::How::kRefused, 0, 0,
+                "Slurm will never start it (Reason=" + t.reason + ")", t.launch.run_dir, 0};
+      auto next = std::next(it);
+      finish(it, std::move(e));
+      it = next;
+      continue;
+    }
+    ++it;
+  }
+}
+
+void SlurmExecutor::check_exit_files() {
+  // Running tasks, and the first few not yet seen running (a short task can
+  // start and end between two polls); the rest wait for squeue.
+  const auto now = Clock::now();
+  int unseen_budget = 2 * slots_ + 8;
+  for (auto it = tasks_.begin(); it != tasks_.end();) {
+    Task& t = it->second;
+    auto next = std::next(it);
+    const bool active = t.state == "RUNNING" || t.state == "COMPLETING" || t.state == "ADOPTED";
+    if (!active && unseen_budget-- <= 0) {
+      it = next;
+      continue;
+    }
+    if (auto code = read_exit_code(t.launch.run_dir)) {
+      JobExit e{t.launch.job_id, JobExit::How::kExited, *code, 0, "", t.launch.run_dir,
+                t.used_s + std::chrono::duration<double>(now - t.polled_at).count()};
+      finish(it, std::move(e));
+    } else if (t.launch.timeout_s > 0 && t.state == "RUNNING" &&
+               t.used_s + std::chrono::duration<double>(now - t.polled_at).count() > t.launch.timeout_s) {
+      run_process({"scancel", t.slurm_id});
+      JobExit e{t.launch.job_id, JobExit::How::kTimedOut, 0, 0,
+                "ran " + std::to_string(static_cast<long>(t.launch.timeout_s)) + " s without a result (scancel)",
+                t.launch.run_dir, t.launch.timeout_s};
+      finish(it, std::move(e));
+    }
+    it = next;
   }
 }
 
@@ -155,26 +302,39 @@ std::optional<JobExit> SlurmExecutor::wait_any(double timeout_s) {
   for (;;) {
     if (!finished_.empty()) {
       JobExit e = std::move(finished_.front());
-      finished_.erase(finished_.begin());
+      finished_.pop_front();
       return e;
     }
-    if (std::chrono::duration<double>(Clock::now() - last_poll_).count() >= poll_interval_s_) {
+    if (!unsent_.empty() && Clock::now() >= retry_at_) {
+      submit_unsent();
+      continue;
+    }
+    if (seconds_since(last_poll_) >= poll_interval()) {
       last_poll_ = Clock::now();
       poll();
       continue;
     }
-    if (jobs_.empty() || Clock::now() >= until) return std::nullopt;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (seconds_since(last_file_check_) >= kFileCheckS) {
+      last_file_check_ = Clock::now();
+      check_exit_files();
+      if (!finished_.empty()) continue;
+    }
+    if ((tasks_.empty() && unsent_.empty()) || Clock::now() >= until) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
 }
 
 std::vector<long long> SlurmExecutor::kill_all() {
   std::vector<long long> ids;
-  for (const auto& [id, j] : jobs_) {
-    run_capture("scancel " + shell_quote(j.slurm_id));
+  std::vector<std::string> cancel = {"scancel"};
+  for (const auto& [id, t] : tasks_) {
+    cancel.push_back(t.slurm_id);
     ids.push_back(id);
   }
-  jobs_.clear();
+  if (cancel.size() > 1) run_process(cancel);
+  tasks_.clear();
+  for (const auto& j : unsent_) ids.push_back(j.job_id);
+  unsent_.clear();
   for (const auto& e : finished_) ids.push_back(e.job_id);
   finished_.clear();
   return ids;

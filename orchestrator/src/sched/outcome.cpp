@@ -70,7 +70,13 @@ JobOutcome classify_exit(const JobExit& e) {
     const std::string t = tail_of_file(e.run_dir / "worker.log", 3);
     return t.empty() ? std::string() : " [log: " + t + "]";
   };
-  if (e.how == JobExit::How::kKilled) {
+  if (e.how == JobExit::How::kRefused) {  // the cluster will not run it: retrying cannot help
+    out.kind = OutcomeKind::kFinal;
+    out.row.status = "failed";
+    out.row.reason = describe(e);
+    return out;
+  }
+  if (e.how == JobExit::How::kKilled || e.how == JobExit::How::kVanished) {
     out.kind = OutcomeKind::kReleased;
     out.row.reason = describe(e);
     return out;

@@ -5,7 +5,10 @@
 //   exit 2                               → final: invalid (not retried: the input is wrong)
 //   exit 1, other codes, a signal, a timeout,
 //   a missing or garbage result file     → retryable (one more attempt, then failed)
-//   killed by our own shutdown           → released (queued again, attempt not spent)
+//   killed by our own shutdown, or gone
+//   without a trace while nobody watched → released (queued again, attempt not spent)
+//   refused by the cluster (bad partition,
+//   a limit the job exceeds)             → final: failed, with the cluster's words
 #pragma once
 
 #include <filesystem>

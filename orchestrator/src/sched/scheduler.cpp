@@ -38,6 +38,16 @@ std::string job_label(Store& store, const ClaimedJob& job) {
   return label + cells;
 }
 
+// "<study>/<series label> d*=<Δ*>": what a queue listing shows for the job.
+std::string job_name(Store& store, const ClaimedJob& job, const std::string& label) {
+  auto st = store.db().prepare("SELECT s.name, COALESCE(j.delta_star, 0) FROM studies s, jobs j WHERE s.id = ? AND j.id = ?");
+  st.bind_all(job.study_id, job.job_id);
+  if (!st.step()) return label;
+  char d[32];
+  std::snprintf(d, sizeof d, "%g", st.as_double(1));
+  return st.as_text(0) + "/" + label.substr(0, label.rfind(' ')) + " d*=" + d;
+}
+
 std::vector<long long> studies_of_job(Store& store, long long job_id) {
   std::vector<long long> out;
   auto st = store.db().prepare(
@@ -62,8 +72,6 @@ ProgressCounts counts(Store& store, const SchedulerOptions& o) {
   return c;
 }
 
-// The per-job limit of a study's own "timeout_s" (0 = none); --timeout of
-// run/daemon, when given, overrides it.
 // A job's wall-clock limit: --timeout when given (0 = none), else the
 // study's timeout_s, else the default derived from the cost model.
 double job_timeout_s(const SchedulerOptions& o, Store& store, const ClaimedJob& job) {
@@ -105,9 +113,14 @@ bool refresh_report(Store& store, long long study_id, const SchedulerOptions& o)
   }
 }
 
-SchedulerSummary run_scheduler(Store& store, Executor& executor, const SchedulerOptions& o) {
+SchedulerSummary run_scheduler(Store& store, Executor& executor, const SchedulerOptions& o,
+                               const std::vector<ClaimedJob>& adopted) {
   SchedulerSummary sum;
   std::map<long long, InFlight> running;
+  for (const auto& job : adopted) running.emplace(job.job_id, InFlight{job, job_label(store, job)});
+  auto record_updates = [&] {
+    for (const auto& u : executor.take_updates()) store.set_queue_state(u.job_id, u.external_id, u.state, u.reason);
+  };
 
   // Studies whose jobs were all done already (reused) finish right away.
   auto sweep = [&](const std::vector<long long>& studies) {
@@ -131,6 +144,8 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       launch.job_hash = job->job_hash;
       launch.threads = o.threads_per_job;
       launch.timeout_s = job_timeout_s(o, store, *job);
+      launch.cells = job->cells;
+      launch.name = job_name(store, *job, f.label);
       try {
         launch.run_dir = prepare_run_dir(o.runs_root, job->job_hash, job->spec.dump(2));
       } catch (const std::exception& e) {
@@ -146,6 +161,8 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       running.emplace(job->job_id, std::move(f));
       if (o.progress) o.progress->update(counts(store, o));
     }
+    executor.flush();
+    record_updates();
     // Nothing running and nothing to claim: done (run) or idle (daemon).
     if (running.empty()) {
       if (o.study) sweep({*o.study});
@@ -163,6 +180,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     }
     // 2. wait for one to finish
     auto exit = executor.wait_any(0.25);
+    record_updates();
     if (!exit) continue;
     auto it = running.find(exit->job_id);
     if (it == running.end()) continue;

@@ -53,7 +53,10 @@ struct SchedulerSummary {
 // kills their orphaned workers (if still alive). Returns the number requeued.
 int recover_stale_jobs(Store& store);
 
-SchedulerSummary run_scheduler(Store& store, Executor& executor, const SchedulerOptions& options);
+// `adopted`: jobs already running in `executor` (adopt_stale_jobs), watched
+// to the end like the ones this loop starts.
+SchedulerSummary run_scheduler(Store& store, Executor& executor, const SchedulerOptions& options,
+                               const std::vector<ClaimedJob>& adopted = {});
 
 // Rewrites the report of a study. A failure is logged and returned as false
 // (the results are safe in the store either way; `run` and `daemon` then

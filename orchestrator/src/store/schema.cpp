@@ -217,6 +217,14 @@ LEFT JOIN uncertainties fu ON fu.series_id = se.id AND fu.delta_star =
   (SELECT MIN(m.delta_star) FROM uncertainties m WHERE m.series_id = se.id);
 )sql";
 
+// Slurm job state for `status` (feature: Slurm executor): the queue's word
+// for a job (PENDING, RUNNING ...) and why it waits (Priority,
+// JobArrayTaskLimit ...), as last polled; NULL for local jobs.
+constexpr const char* kV3SlurmState = R"sql(
+ALTER TABLE jobs ADD COLUMN queue_state TEXT;
+ALTER TABLE jobs ADD COLUMN queue_reason TEXT;
+)sql";
+
 }  // namespace
 
 int schema_version(Database& db) {
@@ -238,6 +246,7 @@ void migrate(Database& db) {
                           std::to_string(kSchemaVersion) + ")", SQLITE_ERROR);
   if (v < 1) db.exec(kV1);
   if (v < 2) db.exec(kV2NominalDeltaStar);
+  if (v < 3) db.exec(kV3SlurmState);
   db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   tx.commit();
 }

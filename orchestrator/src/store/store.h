@@ -141,6 +141,31 @@ class Store {
   // Requeues running jobs whose owner process is gone; returns their count.
   int requeue_stale(const std::function<bool(const std::string& owner)>& alive);
 
+  // Adoption after a crash (store_adopt.cpp): running jobs whose owner is
+  // gone and whose external id starts with `prefix` ("slurm:"), or is not
+  // recorded yet (killed between submission and recording), become
+  // `owner`'s, attempts unchanged, in one transaction. Returned with their
+  // external id and run folder so the executor can watch them again.
+  struct Adopted {
+    ClaimedJob job;
+    std::string external_id;
+    std::filesystem::path run_dir;
+  };
+  std::vector<Adopted> take_over_stale(const std::function<bool(const std::string& owner)>& alive,
+                                       const std::string& owner, const std::string& prefix);
+  // The queue's state and pending reason of a job (NULL for local jobs).
+  void set_queue_state(long long job_id, const std::string& external_id, const std::string& state,
+                       const std::string& reason);
+  // A study's running jobs that sit in an external queue, for `status`.
+  struct QueuedJob {
+    long long job_id = 0;
+    std::string label, external_id, state, reason;
+  };
+  std::vector<QueuedJob> queue_jobs(long long study_id);
+  // Puts a study's failed jobs back in the queue with their attempts reset,
+  // their series and the study open again; returns how many.
+  int retry_failed(long long study_id);
+
   void set_job_external_id(long long job_id, const std::string& external_id);
   void set_job_paths(long long job_id, const std::string& result_path);
 

@@ -32,8 +32,13 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
   {
     auto st = db_.prepare("SELECT id, definition_json, status FROM studies WHERE name = ?");
     st.bind_all(study.name);
+    // Where it runs (the "slurm" settings) is not what the study is.
+    auto same = [](nlohmann::json d) {
+      if (d.is_object()) d.erase("slurm");
+      return d;
+    };
     const bool exists = st.step();
-    const bool changed = exists && nlohmann::json::parse(st.as_text(1)) != study.definition;
+    const bool changed = exists && same(nlohmann::json::parse(st.as_text(1))) != same(study.definition);
     if (changed && !replace)
       throw InputError("/name", "a different study named '" + study.name + "' is already in " +
                                     file_.filename().string() +

@@ -119,8 +119,9 @@ TEST(ProcessIdentity, OnlyTheExactProcessIsKilled) {
   EXPECT_FALSE(kill_process_group_if_alive(fake));
 }
 
-// Fake Slurm: sbatch runs the script at once and prints an id; squeue shows
-// nothing (the job has left the queue); sacct answers from a file.
+// Fake Slurm: sbatch runs every task of the array at once and prints an id;
+// squeue shows nothing (the jobs have left the queue); sacct answers from a
+// file. (tests/integration/slurm/ runs the real one.)
 fs::path fake_slurm(const fs::path& dir) {
   const auto bin = dir / "bin";
   fs::create_directories(bin);
@@ -131,7 +132,10 @@ fs::path fake_slurm(const fs::path& dir) {
   script("sbatch", "[ \"$1\" = --parsable ] || exit 9\n"
                    "n=$(cat \"" + (dir / "next_id").string() + "\" 2>/dev/null || echo 100)\n"
                    "echo $((n + 1)) > \"" + (dir / "next_id").string() + "\"\n"
-                   "case \"$(cat \"" + (dir / "mode").string() + "\")\" in run) sh \"$2\" >/dev/null 2>&1 ;; esac\n"
+                   "last=0; for a; do case $a in --array=0-*) last=${a#--array=0-}; last=${last%%%*} ;; esac; script=$a; done\n"
+                   "case \"$(cat \"" + (dir / "mode").string() + "\")\" in run)\n"
+                   "  i=0; while [ $i -le $last ]; do SLURM_ARRAY_TASK_ID=$i sh \"$script\" >/dev/null 2>&1; i=$((i + 1)); done ;;\n"
+                   "esac\n"
                    "echo \"$n;cluster\"\n");
   script("squeue", "exit 0\n");
   script("sacct", "cat \"" + (dir / "sacct").string() + "\"\n");
@@ -139,32 +143,45 @@ fs::path fake_slurm(const fs::path& dir) {
   return bin;
 }
 
-TEST(SlurmExecutor, SubmitsABatchScriptAndReadsTheExitCode) {
+TEST(SlurmExecutor, SubmitsAnArrayAndReadsTheExitCodes) {
   const auto dir = temp_dir("slurm");
   const auto bin = fake_slurm(dir);
   const std::string old_path = std::getenv("PATH");
   setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
   std::ofstream(dir / "mode") << "run";
-  SlurmExecutor ex(kFake, dir / "runs", 0.05);
+  SlurmSettings settings;
+  settings.poll_s = 0.05;
+  SlurmExecutor ex(kFake, dir / "runs", settings, 2);
   auto job = launch(dir / "runs", 1, "noconv");
+  auto job2 = launch(dir / "runs", 4, "ok");
   ex.start(job);
-  EXPECT_EQ(ex.external_id(1), "slurm:100");
-  const auto script = tail_of_file(job.run_dir / "job.sbatch", 20);
-  EXPECT_NE(script.find("solve"), std::string::npos);
-  const auto e = wait_for(ex);
-  EXPECT_EQ(e.how, JobExit::How::kExited);
-  EXPECT_EQ(e.code, 3);
+  ex.start(job2);
+  EXPECT_EQ(ex.external_id(1), "");  // gathered, not yet submitted
+  ex.flush();
+  EXPECT_EQ(ex.external_id(1), "slurm:100_0");
+  EXPECT_EQ(ex.external_id(4), "slurm:100_1");
+  std::map<long long, JobExit> exits;
+  for (int i = 0; i < 2; ++i) {
+    const auto e = wait_for(ex);
+    exits[e.job_id] = e;
+  }
+  EXPECT_EQ(exits[1].how, JobExit::How::kExited);
+  EXPECT_EQ(exits[1].code, 3);
+  EXPECT_EQ(exits[4].code, 0);
   EXPECT_TRUE(fs::exists(job.run_dir / "result.json"));
+  EXPECT_TRUE(fs::exists(job2.run_dir / "result.json"));
 
   // A job that never wrote its exit code: sacct decides.
   std::ofstream(dir / "mode") << "hold";
   std::ofstream(dir / "sacct") << "CANCELLED|0:9\n";
   ex.start(launch(dir / "runs", 2, "ok"));
+  ex.flush();
   const auto lost = wait_for(ex);
   EXPECT_EQ(lost.how, JobExit::How::kSignaled);
   EXPECT_EQ(lost.signal, 9);
   std::ofstream(dir / "sacct") << "TIMEOUT|0:0\n";
   ex.start(launch(dir / "runs", 3, "ok"));
+  ex.flush();
   EXPECT_EQ(wait_for(ex).how, JobExit::How::kTimedOut);
   setenv("PATH", old_path.c_str(), 1);
 }

@@ -1,0 +1,73 @@
+// Slurm array scripts and sbatch command lines (see slurm_script.h).
+#include "exec/slurm_script.h"
+
+#include <sstream>
+
+#include "exec/executor.h"
+
+namespace gridfree {
+
+std::string shell_quote(const std::string& w) {
+  std::string out = "'";
+  for (char c : w) {
+    if (c == '\'')
+      out += "'\\''";
+    else
+      out += c;
+  }
+  return out + "'";
+}
+
+std::string slurm_job_name(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (out.size() >= 100) break;
+    out += (c <= ' ' || c == '\'' || c == '"' || c == '\\' || c >= 127) ? '_' : static_cast<char>(c);
+  }
+  return out.empty() ? "gridfree" : out;
+}
+
+std::string array_script(const std::filesystem::path& worker, const SlurmArray& a,
+                         const std::vector<std::string>& setup) {
+  std::ostringstream s;
+  s << "#!/bin/sh\n# gridfree: " << a.run_dirs.size() << " job(s), one per array task\n"
+    << "case \"${SLURM_ARRAY_TASK_ID:-0}\" in\n";
+  for (std::size_t i = 0; i < a.run_dirs.size(); ++i) s << "  " << i << ") dir=" << shell_quote(a.run_dirs[i].string()) << " ;;\n";
+  s << "  *) echo \"gridfree: no run folder for array task $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\nesac\n";
+  for (const auto& line : setup) s << line << "\n";
+  // The worker command with the run folder left to the shell variable.
+  const auto cmd = worker_command(worker, "/RUN_DIR", a.threads);
+  std::string line;
+  for (const auto& w : cmd) {
+    std::string word = shell_quote(w);
+    const auto at = w.find("/RUN_DIR");
+    if (at != std::string::npos) word = shell_quote(w.substr(0, at)) + "\"$dir\"" + shell_quote(w.substr(at + 8));
+    line += (line.empty() ? "" : " ") + word;
+  }
+  s << line << " > \"$dir/worker.log\" 2>&1\n"
+    << "code=$?\n"
+    << "echo $code > \"$dir/exit_code.tmp\" && mv \"$dir/exit_code.tmp\" \"$dir/exit_code\"\n"
+    << "exit $code\n";
+  return s.str();
+}
+
+std::vector<std::string> sbatch_command(const SlurmArray& a, const SlurmSettings& s,
+                                        const std::filesystem::path& script, const std::filesystem::path& log_dir) {
+  std::vector<std::string> c = {"sbatch", "--parsable", "--job-name=" + slurm_job_name(a.name),
+                                "--output=" + (log_dir / "%A_%a.out").string(),
+                                "--cpus-per-task=" + std::to_string(a.cpus)};
+  std::string range = "--array=0-" + std::to_string(a.run_dirs.size() - 1);
+  if (a.throttle > 0) range += "%" + std::to_string(a.throttle);
+  c.push_back(range);
+  if (a.time_minutes > 0) c.push_back("--time=" + std::to_string(a.time_minutes));
+  if (a.mem_mb > 0) c.push_back("--mem=" + std::to_string(a.mem_mb) + "M");
+  if (!s.partition.empty()) c.push_back("--partition=" + s.partition);
+  if (!s.account.empty()) c.push_back("--account=" + s.account);
+  if (!s.qos.empty()) c.push_back("--qos=" + s.qos);
+  if (!s.constraint.empty()) c.push_back("--constraint=" + s.constraint);
+  for (const auto& x : s.sbatch_args) c.push_back(x);
+  c.push_back(script.string());
+  return c;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,39 @@
+// The batch script and sbatch command line of a Slurm job array: task i
+// runs the worker (the same command as LocalExecutor, docs/INTERFACE.md) in
+// the i-th run folder, after the profile's setup lines, and saves its exit
+// code to <run folder>/exit_code. Every path is single-quoted in the script
+// and passed to sbatch as its own argv word (spaces are safe).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "exec/slurm_settings.h"
+
+namespace gridfree {
+
+struct SlurmArray {
+  std::string name;                              // --job-name
+  std::vector<std::filesystem::path> run_dirs;   // task i -> run_dirs[i]
+  int threads = 1;                               // worker --threads
+  int cpus = 1;                                  // --cpus-per-task
+  long time_minutes = 0;                         // --time (0 = not given)
+  long mem_mb = 0;                               // --mem (0 = not given)
+  int throttle = 0;                              // %N (0 = none)
+};
+
+std::string array_script(const std::filesystem::path& worker, const SlurmArray& a,
+                         const std::vector<std::string>& setup);
+
+// sbatch --parsable ... SCRIPT
+std::vector<std::string> sbatch_command(const SlurmArray& a, const SlurmSettings& s,
+                                        const std::filesystem::path& script, const std::filesystem::path& log_dir);
+
+// Single-quotes a word for /bin/sh.
+std::string shell_quote(const std::string& word);
+
+// A job name Slurm accepts: printable, no spaces or quotes, at most 100 chars.
+std::string slurm_job_name(const std::string& text);
+
+}  // namespace gridfree

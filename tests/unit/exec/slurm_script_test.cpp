@@ -1,0 +1,68 @@
+// Slurm array scripts (exec/slurm_script.h): run by /bin/sh here with a fake
+// worker that records its arguments, so the quoting is checked by a shell.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "exec/slurm_script.h"
+#include "scratch_dir.h"
+
+namespace gridfree {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(SlurmScript, EachTaskRunsTheWorkerInItsOwnFolderWhateverTheName) {
+  const auto dir = test_support::fresh_scratch_dir("slurm_script", "tasks");
+  const fs::path worker = dir / "fake worker's.sh";
+  std::ofstream(worker) << "#!/bin/sh\nfor a; do echo \"$a\"; done > \"$(dirname \"$2\")/args\"\nexit 3\n";
+  fs::permissions(worker, fs::perms::owner_all);
+  SlurmArray a;
+  a.run_dirs = {dir / "run one", dir / "it's two"};
+  a.threads = 2;
+  for (const auto& d : a.run_dirs) fs::create_directories(d);
+  std::ofstream(dir / "job.sh") << array_script(worker, a, {"export GF_SETUP_RAN=yes"});
+  for (int task = 0; task < 2; ++task) {
+    const std::string cmd = "SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " sh '" + (dir / "job.sh").string() + "'";
+    const int status = std::system(cmd.c_str());
+    EXPECT_EQ(WEXITSTATUS(status), 3);  // the worker's exit code is the task's
+    std::ifstream code(a.run_dirs[task] / "exit_code");
+    int c = -1;
+    code >> c;
+    EXPECT_EQ(c, 3);
+    std::ifstream args(a.run_dirs[task] / "args");
+    std::string first, job;
+    std::getline(args, first);
+    std::getline(args, job);
+    EXPECT_EQ(first, "solve");
+    EXPECT_EQ(job, (a.run_dirs[task] / "job.json").string());
+  }
+  EXPECT_NE(std::system(("SLURM_ARRAY_TASK_ID=7 sh '" + (dir / "job.sh").string() + "' 2>/dev/null").c_str()), 0);
+}
+
+TEST(SlurmScript, SbatchGetsEverySettingAsItsOwnWord) {
+  SlurmArray a;
+  a.name = "study/series d*=2.5";
+  a.run_dirs = {"/x", "/y", "/z"};
+  a.cpus = 4;
+  a.time_minutes = 16;
+  a.mem_mb = 512;
+  a.throttle = 8;
+  SlurmSettings s;
+  s.partition = "p";
+  s.account = "acc";
+  s.qos = "q";
+  s.constraint = "c";
+  s.sbatch_args = {"--exclusive"};
+  const auto c = sbatch_command(a, s, "/runs dir/s.sbatch", "/runs dir/slurm");
+  const std::vector<std::string> want = {"sbatch", "--parsable", "--job-name=study/series_d*=2.5",
+                                         "--output=/runs dir/slurm/%A_%a.out", "--cpus-per-task=4",
+                                         "--array=0-2%8", "--time=16", "--mem=512M", "--partition=p",
+                                         "--account=acc", "--qos=q", "--constraint=c", "--exclusive",
+                                         "/runs dir/s.sbatch"};
+  EXPECT_EQ(c, want);
+}
+
+}  // namespace
+}  // namespace gridfree
