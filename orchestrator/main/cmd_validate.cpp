@@ -1,12 +1,34 @@
 // gridfree validate STUDY  and  gridfree plan STUDY [--json] [-j N]:
 // read-only; nothing is written anywhere.
+#include <algorithm>
 #include <iostream>
+#include <map>
+#include <vector>
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
+#include "extrap/grid_design.h"
 #include "study/study_plan.h"
 
 namespace gridfree::cli {
+namespace {
+
+// Grid-design warnings (extrap/grid_design.h) for every series, on stderr;
+// identical warnings of series that share their grids are printed once.
+void print_grid_warnings(const ExpandedStudy& ex) {
+  std::map<std::size_t, std::vector<double>> h;
+  for (const auto& j : ex.jobs) h[j.series].push_back(j.delta_star);
+  std::vector<std::string> printed;
+  for (const auto& [series, grids] : h) {
+    for (const auto& w : grid_design_warnings(grids)) {
+      if (std::find(printed.begin(), printed.end(), w) != printed.end()) continue;
+      printed.push_back(w);
+      std::cerr << "warning: " << w << '\n';
+    }
+  }
+}
+
+}  // namespace
 
 void add_validate_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("validate", "check a study file: every problem with its JSON path");
@@ -15,6 +37,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
   sub->callback([file, &exit_code] {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
+    print_grid_warnings(ex);
     std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
@@ -32,6 +55,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
+    print_grid_warnings(ex);
     if (*json)
       std::cout << plan_to_json(plan).dump(2) << '\n';
     else

@@ -1,14 +1,18 @@
-// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--vtk DIR] [-v|-q]
+// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--vtk DIR]
+//                       [--progress FILE] [-v|-q]
 //
 // Parses the job (relative paths against the job file's folder), solves it,
 // and writes the result JSON atomically (temporary file + rename; stdout
 // without -o). Exit codes (CONTRACT.md §2): 0 converged; 3 not converged,
 // diverged or failed deposition (result written, with the reason); 2 invalid
-// input (nothing written); 1 internal error.
+// input (nothing written); 1 internal error. --progress FILE: a small JSON
+// (iteration, residuals, dp_star, elapsed, cells; docs/INTERFACE.md) rewritten
+// atomically with every progress log line (≈ every 2 s) for `gridfree status`.
 #include <malloc.h>
 #include <omp.h>
 #include <unistd.h>
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +39,7 @@ struct SolveCommandOptions {
   std::string output;
   int threads = 0;  // 0 = all cores
   std::string vtk_dir;
+  std::string progress_file;
   bool verbose = false;
   bool quiet = false;
 };
@@ -50,6 +55,19 @@ void write_atomically(const std::filesystem::path& path, const std::string& text
     if (!out) throw std::runtime_error("cannot write " + tmp.string());
   }
   std::filesystem::rename(tmp, path);
+}
+
+nlohmann::json progress_json(const IterationReport& r, double elapsed, const std::array<int, 3>& cells, int threads) {
+  return {{"iteration", r.iteration},
+          {"continuity", r.continuity},
+          {"momentum", r.momentum},
+          {"dp_star", r.qoi ? nlohmann::json(*r.qoi) : nlohmann::json(nullptr)},
+          {"dp_star_change", r.qoi_change},
+          {"elapsed_s", elapsed},
+          {"cells", {cells[0], cells[1], cells[2]}},
+          {"threads", threads},
+          {"pid", static_cast<long long>(::getpid())},
+          {"updated_unix_s", std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count()}};
 }
 
 int run_solve(const SolveCommandOptions& o) {
@@ -81,6 +99,13 @@ int run_solve(const SolveCommandOptions& o) {
     if (!every && r.iteration != 1 && now - last < std::chrono::seconds(2)) return;
     last = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
+    if (!o.progress_file.empty()) {
+      try {
+        write_atomically(o.progress_file, progress_json(r, elapsed, job.numerics.cells, threads).dump() + "\n");
+      } catch (const std::exception& e) {
+        spdlog::warn("progress file: {}", e.what());
+      }
+    }
     if (every)
       spdlog::debug("iteration {:6d}  continuity {:.2e}  momentum {:.2e}  dp_star {:.8g} (change {:.1e})  "
                     "pressure {} / momentum {} linear iterations  {:.2f} s",
@@ -118,6 +143,8 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("-o,--output", opts->output, "result JSON file (default: stdout)");
   sub->add_option("--threads", opts->threads, "OpenMP threads (default: all cores)");
   sub->add_option("--vtk", opts->vtk_dir, "write the final fields as legacy VTK into this folder");
+  sub->add_option("--progress", opts->progress_file,
+                  "rewrite this JSON file (iteration, residuals, elapsed) every ~2 s while solving");
   sub->add_flag("-v,--verbose", opts->verbose, "debug output");
   sub->add_flag("-q,--quiet", opts->quiet, "warnings and errors only");
   sub->callback([opts, &exit_code] { exit_code = run_solve(*opts); });

@@ -24,6 +24,10 @@ table.data th { background: #f2f2f2; } table.data td.num { text-align: right; fo
 table.data tr:nth-child(even) td { background: #fafafa; }
 figure { margin: 1em 0; } figcaption { font-size: 0.9em; color: #444; max-width: 720px; }
 p.note { font-size: 0.9em; color: #444; max-width: 900px; }
+div.verdict { border-left: 4px solid #999; padding: 0 1em; margin: 0.5em 0; }
+div.verdict-converged { border-color: #009e73; } div.verdict-pre-asymptotic { border-color: #e69f00; }
+div.verdict-unreliable, div.verdict-insufficient_grids { border-color: #d55e00; }
+div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em; }
 @media print { .scroll { overflow: visible; } figure { break-inside: avoid; } }
 )css";
 
@@ -40,6 +44,20 @@ std::string table_section(const NamedTable& t, const std::string& id, const std:
 std::string figure(const NamedChart& c) {
   return "<figure id=\"" + xml_escape(slugify(c.file)) + "\">\n" + render_svg(c.chart) + "<figcaption>" +
          xml_escape(c.caption) + " File: " + xml_escape(c.file) + "</figcaption>\n</figure>\n";
+}
+
+std::string verdict_section(const ReportContent& c) {
+  std::string out = "<h2 id=\"verdicts\">Verdicts</h2>\n<p class=\"note\">" +
+                    xml_escape(reading_note("verdicts")) + "</p>\n";
+  for (const auto& v : verdict_items(c)) {
+    out += "<div class=\"verdict verdict-" + xml_escape(v.verdict) + "\"><p><strong>" + xml_escape(v.label) +
+           "</strong>: <span class=\"word\">" + xml_escape(v.verdict) + "</span> — " + xml_escape(v.headline) +
+           "</p>\n<ul>\n";
+    for (const auto& r : v.reasons) out += "<li>" + xml_escape(r) + "</li>\n";
+    for (const auto& n : v.notes) out += "<li class=\"extra\">Note: " + xml_escape(n) + "</li>\n";
+    out += "</ul></div>\n";
+  }
+  return out;
 }
 
 bool per_series(const NamedChart& c) { return c.file.rfind("fig1_", 0) == 0 || c.file.rfind("gci_", 0) == 0; }
@@ -62,6 +80,7 @@ std::string render_html(const ReportContent& c) {
     for (const auto& w : warnings) out += "<li>" + xml_escape(w) + "</li>\n";
     out += "</ul></div>\n";
   }
+  out += verdict_section(c);
   out += table_section(c.series_table, "series", "No series.");
   out += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
   out += "<h2 id=\"charts\">Charts</h2>\n";

@@ -34,6 +34,13 @@ std::string render_markdown(const ReportContent& c) {
     for (const auto& w : warnings) out += "- " + w + "\n";
     out += "\n";
   }
+  out += "## Verdicts\n\n" + reading_note("verdicts") + "\n\n";
+  for (const auto& v : verdict_items(c)) {
+    out += "- **" + v.label + "**: **" + v.verdict + "** — " + v.headline + "\n";
+    for (const auto& r : v.reasons) out += "  - " + r + "\n";
+    for (const auto& n : v.notes) out += "  - Note: " + n + "\n";
+  }
+  out += "\n";
   out += table_section(c.series_table, "No series.");
   out += table_section(c.differences_table, "No two series differ in exactly one factor.");
   out += "## Charts\n\n";

@@ -140,6 +140,34 @@ LEFT JOIN results r ON r.job_id = j.id
 LEFT JOIN uncertainties u ON u.series_id = se.id AND u.job_id = j.id;
 )sql";
 
+// Series verdicts (docs/EXTRAPOLATION.md "Verdicts"): one word per series,
+// its reasons as a JSON array of sentences, and a view with f0, the verdict
+// and the finest grid's U and RDE side by side.
+constexpr const char* kSeriesVerdict = R"sql(
+ALTER TABLE series ADD COLUMN verdict TEXT
+  CHECK (verdict IS NULL OR verdict IN ('converged','pre-asymptotic','unreliable','insufficient_grids'));
+ALTER TABLE series ADD COLUMN verdict_reasons TEXT;
+CREATE VIEW v_series AS
+SELECT st.name       AS study,
+       se.id         AS series_id,
+       se.case_name  AS case_name,
+       se.convection AS convection,
+       se.fwhm_dp    AS fwhm_dp,
+       se.drag       AS drag,
+       se.deposition AS deposition,
+       se.status     AS status,
+       se.verdict    AS verdict,
+       e.method      AS method,
+       e.f0          AS f0,
+       (SELECT u.delta_star FROM uncertainties u WHERE u.series_id = se.id ORDER BY u.delta_star LIMIT 1) AS finest_delta_star,
+       (SELECT u.u FROM uncertainties u WHERE u.series_id = se.id ORDER BY u.delta_star LIMIT 1) AS finest_u,
+       (SELECT u.rde FROM uncertainties u WHERE u.series_id = se.id ORDER BY u.delta_star LIMIT 1) AS finest_rde,
+       se.verdict_reasons AS verdict_reasons
+FROM series se
+JOIN studies st ON st.id = se.study_id
+LEFT JOIN extrapolations e ON e.series_id = se.id AND e.chosen = 1;
+)sql";
+
 }  // namespace
 
 int schema_version(Database& db) {
@@ -160,6 +188,7 @@ void migrate(Database& db) {
     throw SqliteError("database schema version " + std::to_string(v) + " is newer than this gridfree (" +
                           std::to_string(kSchemaVersion) + ")", SQLITE_ERROR);
   if (v < 1) db.exec(kV1);
+  if (v < 2) db.exec(kSeriesVerdict);  // series verdicts
   db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   tx.commit();
 }
