@@ -205,21 +205,21 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
 
 std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series) {
   std::vector<NamedChart> out;
-  out.push_back({"fig2_rde.svg", "RDE of every grid of every series (PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
-                 rde_chart(series)});
+  out.push_back({"fig2_rde.svg", "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
+                 rde_chart(series), {}});
   out.push_back({"speed_accuracy.svg",
                  "CPU time against error for every converged job: the cheapest grid that meets a target error is the leftmost-lowest point under it.",
-                 speed_accuracy_chart(series)});
+                 speed_accuracy_chart(series), {}});
   for (std::size_t i = 0; i < series.size(); ++i) {
     const std::string slug = series_slug(series[i], i);
     out.push_back({"fig1_" + slug + ".svg",
                    "DP* against Δ* for " + series[i].label + ", with the fits, f0 and U.",
-                   series_chart(series[i], i)});
+                   series_chart(series[i], i), {}});
     if (series[i].extrapolation && !series[i].extrapolation->gci.empty()) {
       out.push_back({"gci_" + slug + ".svg",
                      "Classic three-grid extrapolation of every consecutive triplet for " + series[i].label +
                          ", beside the regression.",
-                     gci_chart(series[i], i)});
+                     gci_chart(series[i], i), {}});
     }
   }
   return out;

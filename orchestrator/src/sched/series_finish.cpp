@@ -57,6 +57,28 @@ std::string verdict_log_text(const nlohmann::json& ex, const VerdictRow& verdict
   return out;
 }
 
+// Particle generator kind of every case of a study definition (a case that
+// extends another takes its generator when it has none itself).
+std::vector<std::string> generator_kinds(const nlohmann::json& def) {
+  std::vector<std::string> out;
+  if (!def.is_object() || !def.contains("cases") || !def["cases"].is_object()) return out;
+  const auto& cases = def["cases"];
+  for (const auto& [name, c] : cases.items()) {
+    const nlohmann::json* k = &c;
+    for (int depth = 0; depth < 8 && k->is_object(); ++depth) {
+      const auto kind = k->value("/particles/generator/kind"_json_pointer, std::string());
+      if (!kind.empty()) {
+        out.push_back(kind);
+        break;
+      }
+      if (!k->contains("extends") || !(*k)["extends"].is_string() || !cases.contains((*k)["extends"].get<std::string>()))
+        break;
+      k = &cases[(*k)["extends"].get<std::string>()];
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_id) {
@@ -166,6 +188,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   d.extrapolation_method = settings.method;
   d.p_low = settings.p_low;
   d.p_high = settings.p_high;
+  d.generator_kinds = generator_kinds(store.study_definition(study_id));
   for (const auto& s : store.series_of_study(study_id)) {
     SeriesData sd;
     sd.id = s.id;
