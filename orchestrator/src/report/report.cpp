@@ -5,6 +5,8 @@
 #include "report/report.h"
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 
 #include <spdlog/spdlog.h>
 
@@ -33,6 +35,14 @@ void remove_stale_charts(const std::filesystem::path& dir, const std::vector<std
   for (const auto& path : stale) std::filesystem::remove(path, ec);
 }
 
+std::string read_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 }  // namespace
 
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir) {
@@ -58,8 +68,19 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
   }
   for (NamedChart& c : content.charts) {
     files.svg.push_back(out_dir / c.file);
-    write_file_atomically(files.svg.back(), render_svg_file(c.chart));
-    if (!converter.empty()) c.converted = export_chart(converter, files.svg.back());
+    const std::string svg = render_svg_file(c.chart);
+    // An unchanged chart keeps its PDF/PNG: the report is rewritten after
+    // every finished series, most charts stay the same.
+    const bool unchanged = read_file(files.svg.back()) == svg;
+    if (!unchanged) write_file_atomically(files.svg.back(), svg);
+    if (converter.empty()) continue;
+    auto pdf = files.svg.back(), png = files.svg.back();
+    pdf.replace_extension(".pdf");
+    png.replace_extension(".png");
+    if (unchanged && std::filesystem::exists(pdf) && std::filesystem::exists(png))
+      c.converted = {pdf.filename().string(), png.filename().string()};
+    else
+      c.converted = export_chart(converter, files.svg.back());
   }
   remove_stale_charts(out_dir, files.svg);
   files.markdown = out_dir / "report.md";
