@@ -9,11 +9,13 @@ packages=(
   g++ make cmake git pkg-config
   libeigen3-dev nlohmann-json3-dev libsqlite3-dev sqlite3 libspdlog-dev
   libcli11-dev libgtest-dev libvalijson-dev
+  librsvg2-bin
 )
+# librsvg2-bin: rsvg-convert writes the PDF/PNG copies of the report's charts.
 # `install-deps.sh test` adds what only the tests need: headless Chromium
-# renders the HTML report once.
+# renders and prints the HTML report, pdftotext (poppler-utils) reads the PDF.
 if [[ "${1:-}" == "test" ]]; then
-  packages+=(chromium)
+  packages+=(chromium poppler-utils)
 fi
 
 missing=()

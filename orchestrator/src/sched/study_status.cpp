@@ -121,6 +121,7 @@ std::string study_detail_text(const nlohmann::json& d) {
       out += line;
     }
   }
+  if (d["running"].empty() && d["eta"]["seconds"].get<double>() <= 0) return out + "\nnothing left to run\n";
   out += "\nETA " + d["eta"]["text"].get<std::string>() + " (cost model × " + cell(d["eta"]["model_scale"], "%.2g") +
          " from the finished jobs)\n";
   return out;
