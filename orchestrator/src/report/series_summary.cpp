@@ -89,7 +89,8 @@ std::vector<SeriesSummary> summarize_series(const StudyReportData& data, const E
       s.verdict = s.extrapolation->verdict;
       s.verdict_reasons = s.extrapolation->verdict_reasons;
     } else {
-      const Verdict v = verdict_without_fit(s.converged(), "no extrapolation: " + s.extrapolation_error);
+      const Verdict v = verdict_without_fit(
+          s.converged(), s.extrapolation ? "the extrapolation gave no verdict" : "no extrapolation: " + s.extrapolation_error);
       s.verdict = v.value;
       s.verdict_reasons = v.reasons;
     }

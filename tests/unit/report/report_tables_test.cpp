@@ -1,6 +1,8 @@
 // Tests of the series digest, one-factor differences and table renderings,
 // on the synthetic study of report_test_data.h (expected values computed
 // here from the manufactured data, not read back from the report code).
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "report/differences.h"
@@ -86,6 +88,42 @@ TEST(ReportDifferences, FilterWidthAndDepositionAreFactors) {
   EXPECT_EQ(d[0].factor, "fwhm_dp");
   EXPECT_EQ(d[0].value_b, "8");
   EXPECT_EQ(d[1].factor, "deposition");
+}
+
+// U of each series' finest grid from the manufactured data: A (h = 0.5):
+// f = 1004, U = 1.25·4 + 0.5 = 5.5; B (h = 0.5, its 0.25 diverged): f = 1502.5,
+// U = 1.25·2.5 + 0.5 = 3.625. |1000 − 1500| = 500 > √(5.5² + 3.625²) = 6.587.
+TEST(ReportDifferences, DifferenceAgainstCombinedUncertaintyAndVerdicts) {
+  const auto s = summaries();
+  const auto d = one_factor_differences(s);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_DOUBLE_EQ(*d[0].u_a, 5.5);
+  EXPECT_DOUBLE_EQ(*d[0].u_b, 3.625);
+  EXPECT_NEAR(*d[0].u_combined, std::sqrt(5.5 * 5.5 + 3.625 * 3.625), 1e-12);
+  EXPECT_NEAR(*d[0].u_relative, 2 * *d[0].u_combined / 2500, 1e-15);
+  EXPECT_TRUE(*d[0].exceeds_u);
+  // The fake extrapolator gives no verdict: not converged, so the pair is marked.
+  EXPECT_FALSE(d[0].both_converged());
+  const Table t = differences_table(s, d);
+  EXPECT_EQ(t.rows[0].back().exact.rfind("⚠", 0), 0u);
+  EXPECT_FALSE(d[1].exceeds_u.has_value());  // C has no f0
+  EXPECT_EQ(d[1].verdict_b, "insufficient_grids");
+}
+
+TEST(ReportTables, PowerLawPAndCShownOnlyWhenThePowerLawIsChosen) {
+  const Table t = series_table(summaries());
+  std::size_t p = 0, c = 0, method = 0;
+  for (std::size_t i = 0; i < t.columns.size(); ++i) {
+    if (t.columns[i].name == "p") p = i;
+    if (t.columns[i].name == "c") c = i;
+    if (t.columns[i].name == "method") method = i;
+  }
+  EXPECT_EQ(t.rows[0][method].exact, "power");
+  EXPECT_EQ(t.rows[0][p].exact, "1");
+  EXPECT_EQ(t.rows[0][c].exact, "8");
+  EXPECT_EQ(t.rows[1][method].exact, "mixed");  // B: the fake chooses mixed for p = 2
+  EXPECT_EQ(t.rows[1][p].exact, "");
+  EXPECT_EQ(t.rows[1][c].exact, "");
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
