@@ -85,6 +85,12 @@ std::string reading_note(const std::string& section) {
            "grid (shown relative to the mean f0). Differences between series that are not both converged "
            "are marked ⚠: their f0 may move when grids are added.";
   }
+  if (section == "cost.csv") {
+    return "For each target RDE, the cheapest converged grid (least CPU time) whose RDE meets it, with "
+           "its cost in CPU seconds (this machine) and in cells × iterations (any machine). RDE is the "
+           "a-priori error estimate U/|f0| of that grid from the series' extrapolation; a target no grid "
+           "meets needs a finer grid.";
+  }
   if (section == "gci.csv") {
     return "The classic three-grid procedure (apparent order by fixed-point iteration, φ_ext and "
            "GCI_fine = 1.25|f1 − f2|/(r^p − 1)) for every consecutive triplet. On oscillatory data its "

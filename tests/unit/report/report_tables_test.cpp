@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "report/cost_table.h"
 #include "report/differences.h"
 #include "report/report_tables.h"
 #include "report/series_summary.h"
@@ -124,6 +125,26 @@ TEST(ReportTables, PowerLawPAndCShownOnlyWhenThePowerLawIsChosen) {
   EXPECT_EQ(t.rows[1][method].exact, "mixed");  // B: the fake chooses mixed for p = 2
   EXPECT_EQ(t.rows[1][p].exact, "");
   EXPECT_EQ(t.rows[1][c].exact, "");
+}
+
+// Series A (f = 1000 + 8h, U = 1.25·8h + 0.5): RDE = (10h + 0.5)/1000 =
+// 0.55, 1.05, 1.55, 2.05 % on h = 0.5, 1, 1.5, 2; CPU = 20/h³ s.
+TEST(ReportTables, CheapestGridForATargetRde) {
+  const auto s = summaries();
+  auto h_for = [&](double target) {
+    const GridPoint* g = cheapest_grid_for(s[0], target);
+    return g ? g->delta_star : -1.0;
+  };
+  EXPECT_EQ(h_for(0.10), 2.0);
+  EXPECT_EQ(h_for(0.0205), 2.0);  // meets the target exactly
+  EXPECT_EQ(h_for(0.02), 1.5);
+  EXPECT_EQ(h_for(0.01), 0.5);
+  EXPECT_EQ(h_for(0.005), -1.0);
+  const Table t = cost_table(s, {0.02, 0.005});
+  ASSERT_EQ(t.rows.size(), 4u);  // A and B; C has no extrapolation with U
+  EXPECT_EQ(t.rows[0][3].exact, "1.5");
+  EXPECT_DOUBLE_EQ(std::stod(t.rows[0][6].exact), 20 / (1.5 * 1.5 * 1.5));
+  EXPECT_EQ(t.rows[1][3].exact, "none: a finer grid is needed");
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
