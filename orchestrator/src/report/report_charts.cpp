@@ -86,20 +86,27 @@ Chart series_chart(const SeriesSummary& s, std::size_t index) {
   chart.series.push_back(points);
   if (e && !s.h.empty()) {
     const double h_max = s.h.back() * 1.05;
+    // The chosen fit solid colour, the other faded and labelled "rejected".
+    auto tag = [&](const char* method) { return e->method == method ? " (chosen)" : " (rejected)"; };
     const auto& pw = e->power;
     if (pw.f0 && pw.c && pw.p) {
       const double from = *pw.p > 0 ? 0.0 : s.h.front();
-      chart.series.push_back(curve("power law f0 + c h^p", from, h_max,
+      chart.series.push_back(curve(std::string("power law f₀ + c hᵖ") + tag("power"), from, h_max,
                                    [&](double h) { return *pw.f0 + *pw.c * std::pow(h, *pw.p); }, 2));
+      chart.series.back().faded = e->method != "power";
     }
     const auto& mx = e->mixed;
     if (mx.f0 && mx.c1 && mx.c2) {
-      chart.series.push_back(curve("mixed f0 + c1 h + c2 h²", 0.0, h_max,
+      chart.series.push_back(curve(std::string("mixed f₀ + c₁h + c₂h²") + tag("mixed"), 0.0, h_max,
                                    [&](double h) { return *mx.f0 + *mx.c1 * h + *mx.c2 * h * h; }, 4));
+      chart.series.back().faded = e->method != "mixed";
     }
   }
   add_unusable_points(chart, s);
-  if (auto f0 = s.f0()) chart.hlines.push_back({*f0, "f0 = " + format_g(*f0, 8), 6, true});
+  if (auto f0 = s.f0()) {
+    const std::optional<double> u = e && !e->grids.empty() ? e->grids.front().u : std::nullopt;
+    chart.hlines.push_back({*f0, "f₀ = " + format_with_uncertainty(*f0, u, 8), 6, true});
+  }
   if (s.series.grids.empty()) chart.note = "No grids in this series.";
   return chart;
 }

@@ -186,7 +186,8 @@ std::string render_svg(const Chart& chart) {
       }
       if (!path.empty()) {
         svg << "<path d=\"" << path << "\" stroke=\"" << colour << "\" stroke-width=\"1.8\" fill=\"none\""
-            << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
+            << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << (s.faded ? " stroke-opacity=\"0.35\"" : "")
+            << "/>\n";
       }
     }
     for (std::size_t i = 0; i < n && i < s.y_error.size(); ++i) {

@@ -34,6 +34,7 @@ struct ChartSeries {
   bool dashed = false;
   bool hollow = false;            // marker outline only
   int colour = -1;                // palette index; -1 = the series' position
+  bool faded = false;             // drawn at 35 % opacity (e.g. a rejected fit)
 };
 
 struct ChartHLine {

@@ -7,6 +7,8 @@
 
 #include "report/cost_table.h"
 #include "report/differences.h"
+#include "report/report_charts.h"
+#include "report/svg_chart.h"
 #include "report/report_tables.h"
 #include "report/series_summary.h"
 #include "report_test_data.h"
@@ -145,6 +147,29 @@ TEST(ReportTables, CheapestGridForATargetRde) {
   EXPECT_EQ(t.rows[0][3].exact, "1.5");
   EXPECT_DOUBLE_EQ(std::stod(t.rows[0][6].exact), 20 / (1.5 * 1.5 * 1.5));
   EXPECT_EQ(t.rows[1][3].exact, "none: a finer grid is needed");
+}
+
+// B's chosen fit is the mixed one: its power law is drawn faded and
+// labelled "rejected", the mixed fit labelled "chosen" at full opacity.
+TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
+  const auto s = summaries();
+  const Chart chart = series_chart(s[1], 1);
+  int rejected = 0, chosen = 0;
+  for (const auto& c : chart.series) {
+    if (c.name.find("(rejected)") != std::string::npos) {
+      ++rejected;
+      EXPECT_TRUE(c.faded);
+      EXPECT_NE(c.name.find("power law"), std::string::npos);
+    }
+    if (c.name.find("(chosen)") != std::string::npos) {
+      ++chosen;
+      EXPECT_FALSE(c.faded);
+      EXPECT_NE(c.name.find("mixed"), std::string::npos);
+    }
+  }
+  EXPECT_EQ(rejected, 1);
+  EXPECT_EQ(chosen, 1);
+  EXPECT_NE(render_svg(chart).find("stroke-opacity=\"0.35\""), std::string::npos);
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
