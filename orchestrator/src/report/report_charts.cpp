@@ -83,6 +83,7 @@ Chart series_chart(const SeriesSummary& s, std::size_t index) {
     }
   }
   if (any_u) points.name += " ± U";
+  for (double h : s.h) points.point_labels.push_back(format_g(h, 3));  // Δ* of each point
   chart.series.push_back(points);
   if (e && !s.h.empty()) {
     const double h_max = s.h.back() * 1.05;

@@ -202,6 +202,8 @@ std::string render_svg(const Chart& chart) {
       const bool no_value = std::isnan(y);
       if (mx.contains(x) && (no_value || my.contains(y))) {
         points << svg_marker(s.marker, mx(x), no_value ? bottom : my(y), colour, s.hollow) << "\n";
+        if (i < s.point_labels.size() && !s.point_labels[i].empty() && !no_value)
+          points << text(mx(x) + 5, my(y) - 7, s.point_labels[i], " font-size=\"10\" fill=\"#555\"") << "\n";
         continue;
       }
       ++offscale;

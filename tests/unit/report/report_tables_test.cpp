@@ -169,7 +169,11 @@ TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
   }
   EXPECT_EQ(rejected, 1);
   EXPECT_EQ(chosen, 1);
-  EXPECT_NE(render_svg(chart).find("stroke-opacity=\"0.35\""), std::string::npos);
+  const std::string svg = render_svg(chart);
+  EXPECT_NE(svg.find("stroke-opacity=\"0.35\""), std::string::npos);
+  // Each converged point carries its Δ* (B: 0.5, 1, 1.5, 2).
+  for (const char* label : {">0.5</text>", ">1</text>", ">1.5</text>", ">2</text>"})
+    EXPECT_NE(svg.find(label), std::string::npos) << label;
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
