@@ -10,13 +10,15 @@ packages=(
   g++ make cmake git pkg-config
   libeigen3-dev nlohmann-json3-dev libsqlite3-dev sqlite3 libspdlog-dev
   libcli11-dev libgtest-dev
+  librsvg2-bin
 )
+# librsvg2-bin: rsvg-convert writes the PDF/PNG copies of the report's charts.
 # `install-deps.sh test` adds what only the tests need: headless Chromium
-# renders the HTML report once; a single-node Slurm (munge, slurmctld,
-# slurmd, started by tests/integration/slurm/slurm_cluster.sh) runs the
-# Slurm executor tests.
+# renders and prints the HTML report, pdftotext (poppler-utils) reads the
+# PDF; a single-node Slurm (munge, slurmctld, slurmd, started by
+# tests/integration/slurm/slurm_cluster.sh) runs the Slurm executor tests.
 if [[ "${1:-}" == "test" ]]; then
-  packages+=(chromium munge slurmctld slurmd slurm-client)
+  packages+=(chromium poppler-utils munge slurmctld slurmd slurm-client)
 fi
 # `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
 if [[ "${1:-}" == "fuzz" ]]; then

@@ -1,10 +1,12 @@
-// gridfree status [STUDY] [--json] | report STUDY [--out DIR] | cancel STUDY
+// gridfree status [STUDY] [--json] (with STUDY: series, running jobs, ETA) | report STUDY [--out DIR] | cancel STUDY
 #include <iostream>
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
+#include "exec/executor.h"
 #include "sched/series_finish.h"
+#include "sched/study_status.h"
 
 namespace gridfree::cli {
 namespace {
@@ -49,6 +51,7 @@ void add_status_command(CLI::App& app, int& exit_code) {
                        {"state", j.state}, {"reason", j.reason}});
         out[0]["slurm"] = q;
       }
+      if (id && !out.empty()) out[0]["detail"] = study_detail(*store, *id, runs_root_for(*db));
       std::cout << out.dump(2) << '\n';
     } else {
       std::printf("%-28s %-10s %6s %6s %7s %6s %6s %9s %8s\n", "study", "status", "jobs", "queued", "running",
@@ -56,6 +59,7 @@ void add_status_command(CLI::App& app, int& exit_code) {
       for (const auto& s : rows)
         std::printf("%-28s %-10s %6d %6d %7d %6d %6d %9d %4d/%-3d\n", s.name.c_str(), s.status.c_str(), s.jobs,
                     s.queued, s.running, s.done, s.failed, s.converged, s.series_done, s.series);
+      if (id) std::cout << '\n' << study_detail_text(study_detail(*store, *id, runs_root_for(*db)));
       if (!queue.empty()) {
         std::printf("\n%8s %-14s %-14s %-12s %s\n", "job", "grid", "slurm id", "state", "reason");
         for (const auto& j : queue)

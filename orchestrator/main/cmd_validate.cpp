@@ -1,10 +1,14 @@
 // gridfree validate STUDY  and  gridfree plan STUDY [--json] [-j N]:
 // read-only; nothing is written anywhere.
+#include <algorithm>
 #include <iostream>
+#include <map>
+#include <vector>
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
 #include "study/grid_listing.h"
+#include "extrap/grid_design.h"
 #include "study/study_plan.h"
 
 namespace gridfree::cli {
@@ -12,6 +16,21 @@ namespace {
 
 void warn_close_grids(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
+}
+
+// Grid-design warnings (extrap/grid_design.h) for every series, on stderr;
+// identical warnings of series that share their grids are printed once.
+void print_grid_warnings(const ExpandedStudy& ex) {
+  std::map<std::size_t, std::vector<double>> h;
+  for (const auto& j : ex.jobs) h[j.series].push_back(j.delta_star);
+  std::vector<std::string> printed;
+  for (const auto& [series, grids] : h) {
+    for (const auto& w : grid_design_warnings(grids)) {
+      if (std::find(printed.begin(), printed.end(), w) != printed.end()) continue;
+      printed.push_back(w);
+      std::cerr << "warning: " << w << '\n';
+    }
+  }
 }
 
 }  // namespace
@@ -24,6 +43,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     warn_close_grids(neighbour_warnings(grid_listing(study)));
+    print_grid_warnings(ex);
     std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
@@ -41,6 +61,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
+    print_grid_warnings(ex);
     const auto grids = grid_listing(study);
     const auto warnings = neighbour_warnings(grids);
     if (*json) {

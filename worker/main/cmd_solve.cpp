@@ -1,14 +1,18 @@
-// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--vtk DIR] [-v|-q]
+// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--vtk DIR]
+//                       [--progress FILE] [-v|-q]
 //
 // Parses the job (relative paths against the job file's folder), solves it,
 // and writes the result JSON atomically (temporary file + rename; stdout
 // without -o). Exit codes (docs/INTERFACE.md §2): 0 converged; 3 not converged,
 // diverged or failed deposition (result written, with the reason); 2 invalid
-// input (nothing written); 1 internal error.
+// input (nothing written); 1 internal error. --progress FILE: a small JSON
+// (iteration, residuals, dp_star, elapsed, cells; docs/INTERFACE.md) rewritten
+// atomically with every progress log line (≈ every 2 s) for `gridfree status`.
 #include <malloc.h>
 #include <omp.h>
 #include <unistd.h>
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -37,6 +41,7 @@ struct SolveCommandOptions {
   int threads = 0;  // 0 = all cores
   std::string vtk_dir;
   std::string max_memory;  // "" = physical memory
+  std::string progress_file;
   bool verbose = false;
   bool quiet = false;
 };
@@ -74,6 +79,19 @@ void check_memory(const JobSpec& job, const std::string& max_memory) {
                                            " (" + memory_text(limit) + ")");
 }
 
+nlohmann::json progress_json(const IterationReport& r, double elapsed, const std::array<int, 3>& cells, int threads) {
+  return {{"iteration", r.iteration},
+          {"continuity", r.continuity},
+          {"momentum", r.momentum},
+          {"dp_star", r.qoi ? nlohmann::json(*r.qoi) : nlohmann::json(nullptr)},
+          {"dp_star_change", r.qoi_change},
+          {"elapsed_s", elapsed},
+          {"cells", {cells[0], cells[1], cells[2]}},
+          {"threads", threads},
+          {"pid", static_cast<long long>(::getpid())},
+          {"updated_unix_s", std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count()}};
+}
+
 int run_solve(const SolveCommandOptions& o) {
   if (o.quiet) spdlog::set_level(spdlog::level::warn);
   else if (o.verbose) spdlog::set_level(spdlog::level::debug);
@@ -104,6 +122,13 @@ int run_solve(const SolveCommandOptions& o) {
     if (!every && r.iteration != 1 && now - last < std::chrono::seconds(2)) return;
     last = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
+    if (!o.progress_file.empty()) {
+      try {
+        write_atomically(o.progress_file, progress_json(r, elapsed, job.numerics.cells, threads).dump() + "\n");
+      } catch (const std::exception& e) {
+        spdlog::warn("progress file: {}", e.what());
+      }
+    }
     if (every)
       spdlog::debug("iteration {:6d}  continuity {:.2e}  momentum {:.2e}  dp_star {:.8g} (change {:.1e})  "
                     "pressure {} / momentum {} linear iterations  {:.2f} s",
@@ -143,6 +168,8 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("--max-memory", opts->max_memory,
                   "refuse jobs whose estimated memory exceeds this (e.g. 8G; default: physical memory)");
   sub->add_option("--vtk", opts->vtk_dir, "write the final fields as legacy VTK into this folder");
+  sub->add_option("--progress", opts->progress_file,
+                  "rewrite this JSON file (iteration, residuals, elapsed) every ~2 s while solving");
   sub->add_flag("-v,--verbose", opts->verbose, "debug output");
   sub->add_flag("-q,--quiet", opts->quiet, "warnings and errors only");
   sub->callback([opts, &exit_code] { exit_code = run_solve(*opts); });

@@ -36,7 +36,7 @@ std::string describe(const JobExit& e) {
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
                                         int threads) {
   return {worker.string(), "solve", (run_dir / "job.json").string(), "-o", (run_dir / "result.json").string(),
-          "--threads", std::to_string(threads < 1 ? 1 : threads), "-q"};
+          "--threads", std::to_string(threads < 1 ? 1 : threads), "--progress", (run_dir / "progress.json").string()};
 }
 
 std::filesystem::path runs_root_for(const std::filesystem::path& db_file) {

@@ -8,6 +8,7 @@
 #include "extrap/eh14.h"
 #include "extrap/fm_uncertainty.h"
 #include "extrap/gci.h"
+#include "extrap/verdict.h"
 
 namespace gridfree {
 namespace {
@@ -66,8 +67,9 @@ ExtrapolationResult extrapolate(const std::vector<double>& h, const std::vector<
   return extrapolate(make_series(h, f), opts);
 }
 
-ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opts) {
-  ExtrapolationResult out;
+namespace {
+
+void fit_series(const Series& s, const ExtrapolationOptions& opts, ExtrapolationResult& out) {
   for (std::size_t i = 0; i < s.size(); ++i) out.grids.push_back({s.h[i], s.f[i], {}, {}, {}});
   out.gci = gci_triplets(s);
   if (s.size() >= 2) out.data_range = data_range(s.f);
@@ -78,16 +80,24 @@ ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opt
     out.mixed = FitSummary{};
     out.notes.push_back("fewer than 4 grids: no least-squares fit and no uncertainty estimate "
                         "(the three-grid GCI is still reported)");
-    return out;
+    return;
   }
   if (is_constant(s.f)) {
     constant_result(s, out);
-    return out;
+    return;
   }
   if (opts.method == ExtrapolationMethod::kEh14)
     eh14_extrapolate(s, opts, out);
   else
     fm_extrapolate(s, opts, out);
+}
+
+}  // namespace
+
+ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opts) {
+  ExtrapolationResult out;
+  fit_series(s, opts, out);
+  out.verdict = judge(out, opts);
   return out;
 }
 

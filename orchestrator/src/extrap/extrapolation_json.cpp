@@ -59,11 +59,29 @@ ojson gci_json(const GciTriplet& t) {
                {"iterations", t.iterations}};
 }
 
+ojson verdict_json(const Verdict& v) {
+  const VerdictChecks& c = v.checks;
+  return ojson{{"value", v.value},
+               {"reasons", v.reasons},
+               {"next_h", num(v.next_h)},
+               {"checks",
+                {{"n_grids", c.n_grids},
+                 {"dof", c.dof},
+                 {"p", num(c.p)},
+                 {"order_in_range", c.order_in_range},
+                 {"sigma_over_range", num(c.sigma_over_range)},
+                 {"good_fit", c.good_fit},
+                 {"envelope", {num(c.envelope_low), num(c.envelope_high)}},
+                 {"inside_envelope", c.inside_envelope},
+                 {"rde_finest", num(c.rde_finest)}}}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json to_ordered_json(const ExtrapolationResult& r) {
   ojson j;
   j["status"] = r.status;
+  j["verdict"] = verdict_json(r.verdict);
   j["method"] = text(r.method);
   j["f0"] = num(r.f0);
   j["p"] = num(r.p);

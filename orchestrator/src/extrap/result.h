@@ -9,6 +9,7 @@
 #include "extrap/gci.h"
 #include "extrap/power_fit.h"
 #include "extrap/series.h"
+#include "extrap/verdict_types.h"
 
 namespace gridfree {
 
@@ -55,6 +56,7 @@ struct ExtrapolationResult {
   std::vector<GciTriplet> gci;         // consecutive triplets, finest first
   std::optional<Eh14Branch> eh14;
   std::vector<std::string> notes;      // plain-language remarks for reports
+  Verdict verdict;                     // one word and its reasons (verdict.h)
 };
 
 }  // namespace gridfree

@@ -12,6 +12,13 @@ std::optional<double> relative_difference(double a, double b) {
   return 2.0 * std::abs(a - b) / std::abs(a + b);
 }
 
+std::optional<double> finest_uncertainty(const SeriesSummary& s) {
+  if (!s.extrapolation || s.extrapolation->grids.empty()) return std::nullopt;
+  const auto& u = s.extrapolation->grids.front().u;  // grids are h ascending
+  if (!u || !std::isfinite(*u)) return std::nullopt;
+  return u;
+}
+
 std::vector<std::pair<std::string, std::string>> series_factors(const SeriesData& series) {
   return {{"case", series.case_name},
           {"convection", series.convection},
@@ -44,6 +51,15 @@ std::vector<SeriesDifference> one_factor_differences(const std::vector<SeriesSum
       d.f0_a = series[a].f0();
       d.f0_b = series[b].f0();
       if (d.f0_a && d.f0_b) d.relative = relative_difference(*d.f0_a, *d.f0_b);
+      d.verdict_a = series[a].verdict;
+      d.verdict_b = series[b].verdict;
+      d.u_a = finest_uncertainty(series[a]);
+      d.u_b = finest_uncertainty(series[b]);
+      if (d.u_a && d.u_b && d.f0_a && d.f0_b) {
+        d.u_combined = std::hypot(*d.u_a, *d.u_b);
+        d.exceeds_u = std::abs(*d.f0_a - *d.f0_b) > *d.u_combined;
+        if (*d.f0_a + *d.f0_b != 0) d.u_relative = 2.0 * *d.u_combined / std::abs(*d.f0_a + *d.f0_b);
+      }
       out.push_back(d);
     }
   }

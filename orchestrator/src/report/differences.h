@@ -4,6 +4,12 @@
 // configurations:
 //
 //     d_ab = 2 |f0_a − f0_b| / |f0_a + f0_b|
+//
+// and whether the difference exceeds the combined uncertainty of the two
+// series (docs/EXTRAPOLATION.md "Comparing series"):
+//
+//     U_ab = sqrt(U_a² + U_b²),  U_x = U of series x's finest grid,
+//     significant ⇔ |f0_a − f0_b| > U_ab
 #pragma once
 
 #include <cstddef>
@@ -22,7 +28,16 @@ struct SeriesDifference {
   std::size_t a = 0, b = 0;       // indices into the summaries (a < b)
   std::optional<double> f0_a, f0_b;
   std::optional<double> relative; // d_ab; empty when either f0 is missing
+  std::optional<double> u_a, u_b;  // U of each series' finest grid
+  std::optional<double> u_combined;      // sqrt(U_a² + U_b²)
+  std::optional<double> u_relative;      // 2 U_ab / |f0_a + f0_b|, comparable with d_ab
+  std::optional<bool> exceeds_u;         // |f0_a − f0_b| > U_ab
+  std::string verdict_a, verdict_b;      // the two series' verdicts
+  bool both_converged() const { return verdict_a == "converged" && verdict_b == "converged"; }
 };
+
+// U of a series' finest converged grid, if it has one.
+std::optional<double> finest_uncertainty(const SeriesSummary& s);
 
 // 2|a − b| / |a + b|; empty when a + b = 0 or either is not finite.
 std::optional<double> relative_difference(double a, double b);

@@ -121,6 +121,15 @@ ExtrapolationView from_json(const json& j) {
     if (!notes[i].is_string()) throw InputError("/notes/" + std::to_string(i), "expected a string");
     v.notes.push_back(notes[i].get<std::string>());
   }
+  const json& verdict = member(j, "verdict");
+  v.verdict = word(verdict, "value", "/verdict");
+  v.next_h = number(verdict, "next_h", "/verdict");
+  const json& reasons = array_member(verdict, "reasons", "/verdict");
+  for (std::size_t i = 0; i < reasons.size(); ++i) {
+    if (!reasons[i].is_string())
+      throw InputError("/verdict/reasons/" + std::to_string(i), "expected a string");
+    v.verdict_reasons.push_back(reasons[i].get<std::string>());
+  }
   return v;
 }
 

@@ -49,6 +49,9 @@ struct ExtrapolationView {
   std::vector<ExtrapolatedGrid> grids;    // h ascending
   std::vector<GciView> gci;            // finest triplet first
   std::vector<std::string> notes;         // plain-language remarks, when given
+  std::string verdict;                    // /verdict/value (docs/EXTRAPOLATION.md "Verdicts"), "" if absent
+  std::vector<std::string> verdict_reasons;
+  std::optional<double> next_h;           // /verdict/next_h: suggested finer grid
 
   // σ_RE / R_f (PHYSICS.md §8; < 1 = good fit); empty when either is missing or R_f = 0.
   std::optional<double> fit_quality() const;

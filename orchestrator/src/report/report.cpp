@@ -5,10 +5,13 @@
 #include "report/report.h"
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 
 #include <spdlog/spdlog.h>
 
 #include "report/atomic_file.h"
+#include "report/chart_export.h"
 #include "report/report_content.h"
 
 namespace gridfree {
@@ -23,10 +26,21 @@ void remove_stale_charts(const std::filesystem::path& dir, const std::vector<std
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
     const bool per_series = name.rfind("fig1_", 0) == 0 || name.rfind("gci_", 0) == 0;
-    if (!per_series || entry.path().extension() != ".svg") continue;
-    if (std::find(written.begin(), written.end(), entry.path()) == written.end()) stale.push_back(entry.path());
+    const auto ext = entry.path().extension();
+    if (!per_series || (ext != ".svg" && ext != ".pdf" && ext != ".png")) continue;
+    auto as_svg = entry.path();
+    as_svg.replace_extension(".svg");
+    if (std::find(written.begin(), written.end(), as_svg) == written.end()) stale.push_back(entry.path());
   }
   for (const auto& path : stale) std::filesystem::remove(path, ec);
+}
+
+std::string read_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 }  // namespace
@@ -39,16 +53,34 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,
                                const Extrapolator& extrapolate) {
   std::filesystem::create_directories(out_dir);
-  const ReportContent content = build_report_content(data, extrapolate);
+  ReportContent content = build_report_content(data, extrapolate);
   ReportFiles files;
   for (const NamedTable* t : {&content.grids_table, &content.series_table, &content.differences_table,
-                              &content.gci_table, &content.failures_table}) {
+                              &content.cost_table, &content.gci_table, &content.failures_table}) {
     files.csv.push_back(out_dir / t->file);
     write_file_atomically(files.csv.back(), to_csv(t->table));
   }
-  for (const NamedChart& c : content.charts) {
+  const auto converter = data.export_charts ? find_svg_converter() : std::filesystem::path();
+  if (data.export_charts && converter.empty()) {
+    content.export_note = "PDF and PNG copies of the charts were not written: rsvg-convert is not installed "
+                          "(Debian package librsvg2-bin).";
+    spdlog::warn("report: {}", content.export_note);
+  }
+  for (NamedChart& c : content.charts) {
     files.svg.push_back(out_dir / c.file);
-    write_file_atomically(files.svg.back(), render_svg_file(c.chart));
+    const std::string svg = render_svg_file(c.chart);
+    // An unchanged chart keeps its PDF/PNG: the report is rewritten after
+    // every finished series, most charts stay the same.
+    const bool unchanged = read_file(files.svg.back()) == svg;
+    if (!unchanged) write_file_atomically(files.svg.back(), svg);
+    if (converter.empty()) continue;
+    auto pdf = files.svg.back(), png = files.svg.back();
+    pdf.replace_extension(".pdf");
+    png.replace_extension(".png");
+    if (unchanged && std::filesystem::exists(pdf) && std::filesystem::exists(png))
+      c.converted = {pdf.filename().string(), png.filename().string()};
+    else
+      c.converted = export_chart(converter, files.svg.back());
   }
   remove_stale_charts(out_dir, files.svg);
   files.markdown = out_dir / "report.md";

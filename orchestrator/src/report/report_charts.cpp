@@ -83,23 +83,31 @@ Chart series_chart(const SeriesSummary& s, std::size_t index) {
     }
   }
   if (any_u) points.name += " ± U";
+  for (double h : s.h) points.point_labels.push_back(format_g(h, 3));  // Δ* of each point
   chart.series.push_back(points);
   if (e && !s.h.empty()) {
     const double h_max = s.h.back() * 1.05;
+    // The chosen fit solid colour, the other faded and labelled "rejected".
+    auto tag = [&](const char* method) { return e->method == method ? " (chosen)" : " (rejected)"; };
     const auto& pw = e->power;
     if (pw.f0 && pw.c && pw.p) {
       const double from = *pw.p > 0 ? 0.0 : s.h.front();
-      chart.series.push_back(curve("power law f0 + c h^p", from, h_max,
+      chart.series.push_back(curve(std::string("power law f₀ + c hᵖ") + tag("power"), from, h_max,
                                    [&](double h) { return *pw.f0 + *pw.c * std::pow(h, *pw.p); }, 2));
+      chart.series.back().faded = e->method != "power";
     }
     const auto& mx = e->mixed;
     if (mx.f0 && mx.c1 && mx.c2) {
-      chart.series.push_back(curve("mixed f0 + c1 h + c2 h²", 0.0, h_max,
+      chart.series.push_back(curve(std::string("mixed f₀ + c₁h + c₂h²") + tag("mixed"), 0.0, h_max,
                                    [&](double h) { return *mx.f0 + *mx.c1 * h + *mx.c2 * h * h; }, 4));
+      chart.series.back().faded = e->method != "mixed";
     }
   }
   add_unusable_points(chart, s);
-  if (auto f0 = s.f0()) chart.hlines.push_back({*f0, "f0 = " + format_g(*f0, 8), 6, true});
+  if (auto f0 = s.f0()) {
+    const std::optional<double> u = e && !e->grids.empty() ? e->grids.front().u : std::nullopt;
+    chart.hlines.push_back({*f0, "f₀ = " + format_with_uncertainty(*f0, u, 8), 6, true});
+  }
   if (s.series.grids.empty()) chart.note = "No grids in this series.";
   return chart;
 }
@@ -206,20 +214,20 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
 std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series) {
   std::vector<NamedChart> out;
   out.push_back({"fig2_rde.svg", "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
-                 rde_chart(series)});
+                 rde_chart(series), {}});
   out.push_back({"speed_accuracy.svg",
                  "CPU time against error for every converged job: the cheapest grid that meets a target error is the leftmost-lowest point under it.",
-                 speed_accuracy_chart(series)});
+                 speed_accuracy_chart(series), {}});
   for (std::size_t i = 0; i < series.size(); ++i) {
     const std::string slug = series_slug(series[i], i);
     out.push_back({"fig1_" + slug + ".svg",
                    "DP* against Δ* for " + series[i].label + ", with the fits, f0 and U.",
-                   series_chart(series[i], i)});
+                   series_chart(series[i], i), {}});
     if (series[i].extrapolation && !series[i].extrapolation->gci.empty()) {
       out.push_back({"gci_" + slug + ".svg",
                      "Classic three-grid extrapolation of every consecutive triplet for " + series[i].label +
                          ", beside the regression.",
-                     gci_chart(series[i], i)});
+                     gci_chart(series[i], i), {}});
     }
   }
   return out;

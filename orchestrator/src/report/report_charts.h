@@ -23,6 +23,7 @@ struct NamedChart {
   std::string file;      // file name in the report folder
   std::string caption;   // one sentence for the Markdown/HTML
   Chart chart;
+  std::vector<std::string> converted;  // PDF/PNG copies written beside the SVG (chart_export.h)
 };
 
 Chart series_chart(const SeriesSummary& series, std::size_t index);

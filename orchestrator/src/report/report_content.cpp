@@ -1,6 +1,7 @@
 // Assembles the ReportContent from the study data (see report_content.h).
 #include "report/report_content.h"
 
+#include "report/cost_table.h"
 #include "report/report_tables.h"
 
 namespace gridfree {
@@ -32,6 +33,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.series_table = {"series.csv", "Series and extrapolation", series_table(c.series)};
   c.differences_table = {"differences.csv", "Relative differences between series (one factor changed)",
                          differences_table(c.series, c.differences)};
+  c.cost_table = {"cost.csv", "What a target costs (speed vs accuracy)", cost_table(c.series)};
   c.gci_table = {"gci.csv", "Classic three-grid Richardson extrapolation / GCI", gci_table(c.series)};
   c.grids_table = {"grids.csv", "Every grid", grids_table(c.series)};
   c.failures_table = {"failures.csv", "Failures", failures_table(c.series)};

@@ -25,8 +25,9 @@ struct ReportContent {
   StudyReportData data;                    // as given (series in the given order)
   std::vector<SeriesSummary> series;
   std::vector<SeriesDifference> differences;
-  NamedTable series_table, differences_table, gci_table, grids_table, failures_table;
+  NamedTable series_table, differences_table, cost_table, gci_table, grids_table, failures_table;
   std::vector<NamedChart> charts;
+  std::string export_note;                 // why charts have no PDF/PNG copies, if they have none
 
   // Counts over all grids of all series.
   int grids_total() const;

@@ -1,7 +1,10 @@
 // report.html: one self-contained page (inline CSS, inline SVG charts, no
 // scripts, no external resources), with the same content as report.md.
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
 #include "report/text_format.h"
@@ -11,10 +14,11 @@ namespace gridfree {
 namespace {
 
 constexpr const char* kStyle = R"css(
-body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em auto; max-width: 1200px; padding: 0 1em; color: #222; }
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em auto; max-width: 1400px; padding: 0 1em; color: #222; box-sizing: border-box; }
 h1 { font-size: 1.6em; } h2 { margin-top: 2em; border-bottom: 1px solid #ccc; } h3 { font-size: 1.05em; }
 dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1em; }
 dl.summary dt { font-weight: bold; } dl.summary dd { margin: 0; }
+nav.toc { columns: 2; font-size: 0.9em; } nav.toc ul { margin: 0.2em 0; }
 .attention { background: #fff4e5; border-left: 4px solid #e69f00; padding: 0.5em 1em; }
 .scroll { overflow-x: auto; }
 table.data { border-collapse: collapse; font-size: 0.85em; margin: 0.5em 0; }
@@ -22,9 +26,25 @@ table.data th, table.data td { border: 1px solid #ccc; padding: 0.2em 0.5em; whi
 table.data td.prose { white-space: normal; min-width: 18em; max-width: 36em; }
 table.data th { background: #f2f2f2; } table.data td.num { text-align: right; font-variant-numeric: tabular-nums; }
 table.data tr:nth-child(even) td { background: #fafafa; }
-figure { margin: 1em 0; } figcaption { font-size: 0.9em; color: #444; max-width: 720px; }
+.charts { display: grid; grid-template-columns: repeat(auto-fill, minmax(620px, 1fr)); gap: 0 1.5em; }
+figure { margin: 1em 0; } figure svg { max-width: 100%; height: auto; }
+figcaption { font-size: 0.9em; color: #444; max-width: 720px; }
 p.note { font-size: 0.9em; color: #444; max-width: 900px; }
-@media print { .scroll { overflow: visible; } figure { break-inside: avoid; } }
+div.verdict { border-left: 4px solid #999; padding: 0 1em; margin: 0.5em 0; }
+div.verdict-converged { border-color: #009e73; } div.verdict-pre-asymptotic { border-color: #e69f00; }
+div.verdict-unreliable, div.verdict-insufficient_grids { border-color: #d55e00; }
+div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em; }
+@page { size: A4; margin: 10mm; }
+@media print {
+  body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
+  .scroll { overflow: visible; }
+  table.data { font-size: 6.5pt; width: 100%; table-layout: auto; }
+  table.data th, table.data td { white-space: normal; overflow-wrap: anywhere; padding: 1px 2px; }
+  table.data td.prose { min-width: 0; }
+  .charts { display: block; }
+  figure { break-inside: avoid; } h2, h3 { break-after: avoid; }
+  nav.toc { columns: 1; }
+}
 )css";
 
 std::string table_section(const NamedTable& t, const std::string& id, const std::string& empty_text) {
@@ -40,6 +60,54 @@ std::string table_section(const NamedTable& t, const std::string& id, const std:
 std::string figure(const NamedChart& c) {
   return "<figure id=\"" + xml_escape(slugify(c.file)) + "\">\n" + render_svg(c.chart) + "<figcaption>" +
          xml_escape(c.caption) + " File: " + xml_escape(c.file) + "</figcaption>\n</figure>\n";
+}
+
+std::string verdict_section(const ReportContent& c) {
+  std::string out = "<h2 id=\"verdicts\">Verdicts</h2>\n<p class=\"note\">" +
+                    xml_escape(reading_note("verdicts")) + "</p>\n";
+  for (const auto& v : verdict_items(c)) {
+    out += "<div class=\"verdict verdict-" + xml_escape(v.verdict) + "\"><p><strong>" + xml_escape(v.label) +
+           "</strong>: <span class=\"word\">" + xml_escape(v.verdict) + "</span> — " + xml_escape(v.headline) +
+           "</p>\n<ul>\n";
+    for (const auto& r : v.reasons) out += "<li>" + xml_escape(r) + "</li>\n";
+    for (const auto& n : v.notes) out += "<li class=\"extra\">Note: " + xml_escape(n) + "</li>\n";
+    out += "</ul></div>\n";
+  }
+  return out;
+}
+
+std::string about_section(const ReportContent& c) {
+  std::string out;
+  for (const auto& a : about_sections(c.data.generator_kinds)) {
+    out += "<h2 id=\"about\">" + xml_escape(a.title) + "</h2>\n";
+    for (const auto& p : a.paragraphs) out += "<p>" + xml_escape(p) + "</p>\n";
+  }
+  return out;
+}
+
+// Sections and every file beside the report, linked.
+std::string contents(const ReportContent& c) {
+  std::string out = "<nav class=\"toc\"><strong>Contents</strong>\n<ul>\n";
+  for (const auto& [id, title] : std::vector<std::pair<std::string, std::string>>{
+           {"verdicts", "Verdicts"}, {"series", c.series_table.title}, {"differences", c.differences_table.title},
+           {"cost", c.cost_table.title}, {"charts", "Charts"}, {"gci", c.gci_table.title}, {"failures", c.failures_table.title},
+           {"grids", c.grids_table.title}})
+    out += "<li><a href=\"#" + id + "\">" + xml_escape(title) + "</a></li>\n";
+  if (!about_sections(c.data.generator_kinds).empty()) out += "<li><a href=\"#about\">About this case</a></li>\n";
+  out += "</ul>\n<strong>Files</strong>\n<ul>\n";
+  for (const NamedTable* t :
+       {&c.series_table, &c.differences_table, &c.cost_table, &c.gci_table, &c.failures_table, &c.grids_table})
+    out += "<li><a href=\"" + xml_escape(t->file) + "\">" + xml_escape(t->file) + "</a></li>\n";
+  for (const auto& chart : c.charts) {
+    out += "<li><a href=\"" + xml_escape(chart.file) + "\">" + xml_escape(chart.file) + "</a>";
+    for (const auto& extra : chart.converted)
+      out += " · <a href=\"" + xml_escape(extra) + "\">" + xml_escape(extra.substr(extra.rfind('.') + 1)) + "</a>";
+    out += "</li>\n";
+  }
+  out += "</ul>";
+  if (!c.export_note.empty()) out += "<p class=\"note\">" + xml_escape(c.export_note) + "</p>";
+  out += "</nav>\n";
+  return out;
 }
 
 bool per_series(const NamedChart& c) { return c.file.rfind("fig1_", 0) == 0 || c.file.rfind("gci_", 0) == 0; }
@@ -62,16 +130,21 @@ std::string render_html(const ReportContent& c) {
     for (const auto& w : warnings) out += "<li>" + xml_escape(w) + "</li>\n";
     out += "</ul></div>\n";
   }
+  out += contents(c);
+  out += verdict_section(c);
+  out += about_section(c);
   out += table_section(c.series_table, "series", "No series.");
   out += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
-  out += "<h2 id=\"charts\">Charts</h2>\n";
+  out += table_section(c.cost_table, "cost", "No series has an extrapolation yet.");
+  out += "<h2 id=\"charts\">Charts</h2>\n<div class=\"charts\">\n";
   for (const auto& chart : c.charts) {
     if (!per_series(chart)) out += figure(chart);
   }
-  out += "<h3>Per series</h3>\n";
+  out += "</div>\n<h3>Per series</h3>\n<div class=\"charts\">\n";
   for (const auto& chart : c.charts) {
     if (per_series(chart)) out += figure(chart);
   }
+  out += "</div>\n";
   out += table_section(c.gci_table, "gci", "No series has three converged grids yet.");
   out += table_section(c.failures_table, "failures", "None: every finished grid converged.");
   out += table_section(c.grids_table, "grids", "No grids.");

@@ -1,6 +1,7 @@
 // report.md: summary, tables, and links to the SVG charts beside it.
 #include <string>
 
+#include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
 #include "report/text_format.h"
@@ -34,9 +35,22 @@ std::string render_markdown(const ReportContent& c) {
     for (const auto& w : warnings) out += "- " + w + "\n";
     out += "\n";
   }
+  out += "## Verdicts\n\n" + reading_note("verdicts") + "\n\n";
+  for (const auto& v : verdict_items(c)) {
+    out += "- **" + v.label + "**: **" + v.verdict + "** — " + v.headline + "\n";
+    for (const auto& r : v.reasons) out += "  - " + r + "\n";
+    for (const auto& n : v.notes) out += "  - Note: " + n + "\n";
+  }
+  out += "\n";
+  for (const auto& a : about_sections(c.data.generator_kinds)) {
+    out += "## " + a.title + "\n\n";
+    for (const auto& p : a.paragraphs) out += p + "\n\n";
+  }
   out += table_section(c.series_table, "No series.");
   out += table_section(c.differences_table, "No two series differ in exactly one factor.");
+  out += table_section(c.cost_table, "No series has an extrapolation yet.");
   out += "## Charts\n\n";
+  if (!c.export_note.empty()) out += c.export_note + "\n\n";
   for (const auto& chart : c.charts) {
     if (chart.file.rfind("fig1_", 0) == 0 || chart.file.rfind("gci_", 0) == 0) continue;
     out += "### " + chart.chart.title + "\n\n" + chart_link(chart);

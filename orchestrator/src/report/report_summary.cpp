@@ -1,6 +1,7 @@
 // Summary items and reading notes for the report documents.
 #include "report/report_summary.h"
 
+#include "extrap/verdict.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -34,18 +35,61 @@ std::vector<std::string> series_warnings(const ReportContent& c) {
   return out;
 }
 
+std::vector<VerdictItem> verdict_items(const ReportContent& c) {
+  std::vector<VerdictItem> out;
+  for (const auto& s : c.series) {
+    VerdictItem item{s.label, s.verdict, {}, s.verdict_reasons, {}};
+    if (const auto f0 = s.f0()) {
+      const auto& grids = s.extrapolation->grids;
+      const std::optional<double> u = grids.empty() ? std::nullopt : grids.front().u;
+      item.headline = "f0 = " + format_with_uncertainty(*f0, u);
+      if (!grids.empty() && u)
+        item.headline += " (U of the finest grid, Δ* = " + format_g(grids.front().h, 4) +
+                         ", RDE " + format_percent(grids.front().rde) + ")";
+    } else {
+      item.headline = "no extrapolated value";
+    }
+    const std::string note = s.note();
+    if (!note.empty()) item.notes.push_back(note);
+    if (s.extrapolation)
+      for (const auto& n : s.extrapolation->notes) item.notes.push_back(n);
+    out.push_back(std::move(item));
+  }
+  return out;
+}
+
 std::string reading_note(const std::string& section) {
   if (section == "series.csv") {
     return "f0 is the extrapolated (grid-free) DP*. The power law f0 + c·h^p is used when its exponent is "
            "found inside the accepted range, otherwise the mixed-order fit f0 + c1·h + c2·h². σ_RE is the "
            "standard deviation of the weighted fit, R_f = (max f − min f)/(ng − 1) the data range; "
            "σ_RE/R_f < 1 is a good fit. Fs = max(1.25, 3σ_RE/R_f) is the safety factor of U. "
-           "Series with fewer than 4 converged grids get no uncertainty.";
+           "Series with fewer than 4 converged grids get no uncertainty. The verdict follows from these "
+           "numbers by the rules of docs/EXTRAPOLATION.md (the verdict section above gives the reasons).";
+  }
+  if (section == "verdicts") {
+    const VerdictRules r;
+    const std::string k = format_g(r.envelope_k, 3);
+    return "Each series' verdict follows from its extrapolation by the rules of docs/EXTRAPOLATION.md: "
+           "converged (observed order in the accepted range, σ_RE/R_f < 1, f0 within " + k +
+           " R_f of the data, at least " + std::to_string(r.min_dof) + " degrees of freedom, finest-grid RDE ≤ " +
+           format_percent(r.rde_converged) + "), pre-asymptotic (the data do not yet show the asymptotic "
+           "range: add the finer grid named), unreliable (f0 more than " + k + " R_f beyond the data, fewer than " +
+           std::to_string(3 + r.min_dof) + " grids, or finest-grid RDE above " + format_percent(r.rde_unreliable) +
+           "), insufficient_grids (fewer than 4 converged grids).";
   }
   if (section == "differences.csv") {
     return "Pairs of series that differ in exactly one factor, and 2|f0a − f0b|/(f0a + f0b): the effect of "
            "that factor (model form: drag law, filter width, particle configuration) on the grid-free "
-           "answer. Compare it with the RDE of the two series: a difference well above both RDEs is real.";
+           "answer. It is beyond the uncertainty when |f0a − f0b| > √(U_a² + U_b²), U of each series' finest "
+           "grid (shown relative to the mean f0). Differences between series that are not both converged "
+           "are marked ⚠: their f0 may move when grids are added.";
+  }
+  if (section == "cost.csv") {
+    return "For each target RDE, the cheapest converged grid (least CPU time) whose RDE meets it, with "
+           "its cost in CPU seconds (this machine) and in cells × iterations (any machine). RDE is the "
+           "a-priori error estimate U/|f0| of that grid from the series' extrapolation; a target no grid "
+           "meets needs a finer grid.";
   }
   if (section == "gci.csv") {
     return "The classic three-grid procedure (apparent order by fixed-point iteration, φ_ext and "

@@ -17,6 +17,15 @@ std::vector<std::pair<std::string, std::string>> summary_items(const ReportConte
 // Series that are incomplete or have insufficient grids, one line each.
 std::vector<std::string> series_warnings(const ReportContent& content);
 
+// What the verdict section shows for one series (docs/EXTRAPOLATION.md
+// "Verdicts"): the verdict word, a headline with f0 ± U rounded to the
+// digits U supports, the reasons and any notes in words.
+struct VerdictItem {
+  std::string label, verdict, headline;
+  std::vector<std::string> reasons, notes;
+};
+std::vector<VerdictItem> verdict_items(const ReportContent& content);
+
 // One short paragraph per section on how to read it (keyed by CSV/section name).
 std::string reading_note(const std::string& section);
 

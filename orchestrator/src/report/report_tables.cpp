@@ -96,6 +96,7 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
 Table series_table(const std::vector<SeriesSummary>& series) {
   Table t;
   t.columns.push_back(text_col("series"));
+  t.columns.push_back(text_col("verdict"));
   add_factor_columns(t.columns);
   t.columns.push_back(text_col("status"));
   t.columns.push_back(num_col("grids"));
@@ -117,11 +118,15 @@ Table series_table(const std::vector<SeriesSummary>& series) {
   t.columns.push_back(num_col("sigma_re_over_rf", "σ_RE/R_f"));
   t.columns.push_back(text_col("good_fit", "good fit"));
   t.columns.push_back(num_col("fs", "Fs"));
-  t.columns.push_back(prose_col("note"));
-  t.columns.push_back(prose_col("extrapolation_notes", "extrapolation notes"));
+  // Long texts are CSV-only here; the report prints them per series in its
+  // verdict section, so the table keeps to the page width.
+  t.columns.push_back(text_col("verdict_reasons", {}, true));
+  t.columns.push_back(text_col("note", {}, true));
+  t.columns.push_back(text_col("extrapolation_notes", {}, true));
   for (const auto& s : series) {
     std::vector<Cell> row;
     row.push_back(text_cell(s.label));
+    row.push_back(text_cell(s.verdict));
     add_factor_cells(row, s.series);
     row.push_back(text_cell(series_status(s)));
     row.push_back(integer_cell(static_cast<long long>(s.series.grids.size())));
@@ -132,8 +137,12 @@ Table series_table(const std::vector<SeriesSummary>& series) {
     const ExtrapolationView& e = s.extrapolation ? *s.extrapolation : empty;
     row.push_back(text_cell(e.method));
     row.push_back(number_cell(s.f0(), 8));
-    row.push_back(number_cell(e.p, 3));
-    row.push_back(number_cell(e.power.c, 4));
+    // p and c belong to the power law: shown only when it is the chosen fit
+    // (the store keeps them NULL for a mixed fit; the rejected fit's values
+    // stay in the CSV-only p_power and f0_power columns).
+    const bool power_chosen = e.method == "power";
+    row.push_back(number_cell(power_chosen ? e.p : std::nullopt, 3));
+    row.push_back(number_cell(power_chosen ? e.power.c : std::nullopt, 4));
     row.push_back(number_cell(e.mixed.c1, 4));
     row.push_back(number_cell(e.mixed.c2, 4));
     row.push_back(number_cell(e.power.f0, 8));
@@ -146,6 +155,9 @@ Table series_table(const std::vector<SeriesSummary>& series) {
     row.push_back(number_cell(quality, 3));
     row.push_back(text_cell(quality ? (*quality < 1 ? "yes" : "no") : ""));
     row.push_back(number_cell(e.fs, 3));
+    std::string reasons;
+    for (const auto& r : s.verdict_reasons) reasons += (reasons.empty() ? "" : "; ") + r;
+    row.push_back(text_cell(reasons));
     row.push_back(text_cell(s.note()));
     std::string notes;
     for (const auto& n : e.notes) notes += (notes.empty() ? "" : "; ") + n;
@@ -159,12 +171,20 @@ Table differences_table(const std::vector<SeriesSummary>& series,
                         const std::vector<SeriesDifference>& differences) {
   Table t;
   t.columns = {text_col("factor"),          text_col("value_a", "a"),   text_col("value_b", "b"),
-               text_col("series_a"),        text_col("series_b"),       num_col("f0_a"),
-               num_col("f0_b"),             num_col("relative_difference", "2|f0a−f0b|/(f0a+f0b)")};
+               text_col("series_a", {}, true), text_col("series_b", {}, true), num_col("f0_a"),
+               num_col("f0_b"),             num_col("relative_difference", "2|f0a−f0b|/(f0a+f0b)"),
+               num_col("u_a", "U_a", true), num_col("u_b", "U_b", true),
+               num_col("u_combined_relative", "2·√(U_a²+U_b²)/(f0a+f0b)"),
+               text_col("exceeds_u", "beyond U?"), text_col("verdicts")};
   for (const auto& d : differences) {
+    std::string verdicts = d.verdict_a + " / " + d.verdict_b;
+    if (!d.both_converged()) verdicts = "⚠ " + verdicts;
+    std::string exceeds = d.exceeds_u ? (*d.exceeds_u ? "yes" : "no") : "";
     t.rows.push_back({text_cell(d.factor), text_cell(d.value_a), text_cell(d.value_b),
                       text_cell(series[d.a].label), text_cell(series[d.b].label),
-                      number_cell(d.f0_a, 8), number_cell(d.f0_b, 8), percent_cell(d.relative)});
+                      number_cell(d.f0_a, 8), number_cell(d.f0_b, 8), percent_cell(d.relative),
+                      number_cell(d.u_a, 3), number_cell(d.u_b, 3), percent_cell(d.u_relative),
+                      text_cell(exceeds), text_cell(verdicts)});
   }
   return t;
 }

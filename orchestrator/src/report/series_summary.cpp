@@ -7,6 +7,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "extrap/verdict.h"
+
 namespace gridfree {
 
 bool is_converged(const GridPoint& grid) {
@@ -83,6 +85,16 @@ std::vector<SeriesSummary> summarize_series(const StudyReportData& data, const E
         s.extrapolation_error = e.what();
       }
     }
+    if (s.extrapolation && !s.extrapolation->verdict.empty()) {
+      s.verdict = s.extrapolation->verdict;
+      s.verdict_reasons = s.extrapolation->verdict_reasons;
+    } else {
+      const Verdict v = verdict_without_fit(
+          s.converged(), s.extrapolation ? "the extrapolation gave no verdict" : "no extrapolation: " + s.extrapolation_error);
+      s.verdict = v.value;
+      s.verdict_reasons = v.reasons;
+    }
+    if (s.incomplete) s.verdict_reasons.insert(s.verdict_reasons.begin(), "provisional: grids are still pending");
     out.push_back(std::move(s));
   }
   return out;

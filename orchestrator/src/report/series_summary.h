@@ -30,6 +30,10 @@ struct SeriesSummary {
   bool incomplete = false;            // pending grids, or series status queued/running
   std::optional<ExtrapolationView> extrapolation;
   std::string extrapolation_error;    // why there is no extrapolation, if there is none
+  // docs/EXTRAPOLATION.md "Verdicts": the extrapolation's verdict, or (no
+  // extrapolation) insufficient_grids / unreliable from the converged count.
+  std::string verdict;
+  std::vector<std::string> verdict_reasons;
 
   int converged() const { return static_cast<int>(h.size()); }
   bool insufficient() const { return converged() < kMinGridsForUncertainty; }

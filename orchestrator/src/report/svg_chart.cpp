@@ -186,7 +186,8 @@ std::string render_svg(const Chart& chart) {
       }
       if (!path.empty()) {
         svg << "<path d=\"" << path << "\" stroke=\"" << colour << "\" stroke-width=\"1.8\" fill=\"none\""
-            << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
+            << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << (s.faded ? " stroke-opacity=\"0.35\"" : "")
+            << "/>\n";
       }
     }
     for (std::size_t i = 0; i < n && i < s.y_error.size(); ++i) {
@@ -201,6 +202,8 @@ std::string render_svg(const Chart& chart) {
       const bool no_value = std::isnan(y);
       if (mx.contains(x) && (no_value || my.contains(y))) {
         points << svg_marker(s.marker, mx(x), no_value ? bottom : my(y), colour, s.hollow) << "\n";
+        if (i < s.point_labels.size() && !s.point_labels[i].empty() && !no_value)
+          points << text(mx(x) + 5, my(y) - 7, s.point_labels[i], " font-size=\"10\" fill=\"#555\"") << "\n";
         continue;
       }
       ++offscale;

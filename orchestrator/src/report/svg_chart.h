@@ -34,6 +34,8 @@ struct ChartSeries {
   bool dashed = false;
   bool hollow = false;            // marker outline only
   int colour = -1;                // palette index; -1 = the series' position
+  bool faded = false;             // drawn at 35 % opacity (e.g. a rejected fit)
+  std::vector<std::string> point_labels = {};  // empty, or one small label per point ("" = none)
 };
 
 struct ChartHLine {

@@ -1,6 +1,7 @@
 // Escaping and number formatting for the report (see text_format.h).
 #include "report/text_format.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -100,6 +101,22 @@ std::string slugify(std::string_view text) {
     out += (std::isalnum(c) || ch == '-' || ch == '_') ? ch : '_';
   }
   return out;
+}
+
+std::string format_with_uncertainty(double value, const std::optional<double>& u, int digits) {
+  if (!u || !std::isfinite(*u) || *u <= 0 || !std::isfinite(value)) return format_g(value, digits);
+  // Decimal place of U's second significant digit: U = 1.37 → 1 decimal.
+  const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(*u))));
+  if (decimals == 0) {
+    // U ≥ 10: round both to U's two significant digits.
+    const double step = std::pow(10.0, std::floor(std::log10(*u)) - 1);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.0f ± %.0f", std::round(value / step) * step, std::round(*u / step) * step);
+    return buf;
+  }
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.*f ± %.*f", decimals, value, decimals, *u);
+  return buf;
 }
 
 }  // namespace gridfree

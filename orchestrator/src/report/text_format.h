@@ -31,6 +31,11 @@ std::string format_exact(const std::optional<double>& value);
 // value·100 with `digits` significant digits and a % sign; "" when absent.
 std::string format_percent(const std::optional<double>& fraction, int digits = 3);
 
+// "1017.3 ± 1.4": U rounded to two significant digits and the value to the
+// same decimal place (no more digits than U supports). Without a usable U
+// (absent, zero or not finite) the value alone with `digits` significant digits.
+std::string format_with_uncertainty(double value, const std::optional<double>& u, int digits = 6);
+
 // A file-name-safe slug: letters, digits, '-' and '_' kept, the rest '_'.
 std::string slugify(std::string_view text);
 

@@ -13,6 +13,7 @@
 #include "sched/job_timeout.h"
 #include "sched/outcome.h"
 #include "sched/series_finish.h"
+#include "sched/study_status.h"
 #include "store/owner.h"
 
 namespace gridfree {
@@ -69,6 +70,8 @@ ProgressCounts counts(Store& store, const SchedulerOptions& o) {
     c.running += s.running;
     if (s.mean_wall_s > 0) c.mean_wall_s = s.mean_wall_s;
   }
+  // One study: the cost model scaled by measured times (sched/study_eta.h).
+  if (o.study) c.eta_s = study_detail(store, *o.study, o.runs_root, o.workers)["eta"]["seconds"].get<double>();
   return c;
 }
 

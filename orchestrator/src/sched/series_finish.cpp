@@ -2,10 +2,12 @@
 #include "sched/series_finish.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include <spdlog/spdlog.h>
 
 #include "core/version.h"
+#include "extrap/verdict.h"
 #include "report/report.h"
 
 namespace gridfree {
@@ -17,6 +19,64 @@ std::optional<double> num(const nlohmann::json& j, const char* key) {
   if (it == j.end() || !it->is_number()) return std::nullopt;
   const double v = it->get<double>();
   return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+// The verdict object of the extrapolation JSON; a series whose extrapolation
+// could not be made at all gets one from verdict_without_fit.
+VerdictRow verdict_row(const nlohmann::json& ex, int n_converged) {
+  if (ex.contains("verdict") && ex["verdict"].is_object() && ex["verdict"].contains("value") &&
+      ex["verdict"]["value"].is_string()) {
+    const auto& v = ex["verdict"];
+    const nlohmann::json reasons = v.contains("reasons") && v["reasons"].is_array() ? v["reasons"] : nlohmann::json::array();
+    return {v["value"].get<std::string>(), reasons.dump()};
+  }
+  const Verdict v = verdict_without_fit(n_converged, "the extrapolation failed: " + ex.value("status", std::string("?")));
+  return {v.value, nlohmann::json(v.reasons).dump()};
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+// "verdict converged: f0 = 1017.12, U(finest) = 1.3 (0.13 %)" — never "ok".
+std::string verdict_log_text(const nlohmann::json& ex, const VerdictRow& verdict) {
+  std::string out = "verdict " + verdict.value;
+  const auto f0 = num(ex, "f0");
+  if (f0) out += ": f0 = " + fixed(*f0, 3);
+  if (ex.contains("grids") && ex["grids"].is_array() && !ex["grids"].empty()) {
+    const auto u = num(ex["grids"][0], "u");
+    const auto rde = num(ex["grids"][0], "rde");
+    if (u) out += ", U(finest) = " + fixed(*u, 3);
+    if (rde) out += " (RDE " + fixed(100 * *rde, 2) + " %)";
+  }
+  const auto reasons = nlohmann::json::parse(verdict.reasons_json, nullptr, false);
+  if (verdict.value != "converged" && reasons.is_array() && !reasons.empty() && reasons[0].is_string())
+    out += "; " + reasons[0].get<std::string>();
+  return out;
+}
+
+// Particle generator kind of every case of a study definition (a case that
+// extends another takes its generator when it has none itself).
+std::vector<std::string> generator_kinds(const nlohmann::json& def) {
+  std::vector<std::string> out;
+  if (!def.is_object() || !def.contains("cases") || !def["cases"].is_object()) return out;
+  const auto& cases = def["cases"];
+  for (const auto& [name, c] : cases.items()) {
+    const nlohmann::json* k = &c;
+    for (int depth = 0; depth < 8 && k->is_object(); ++depth) {
+      const auto kind = k->value("/particles/generator/kind"_json_pointer, std::string());
+      if (!kind.empty()) {
+        out.push_back(kind);
+        break;
+      }
+      if (!k->contains("extends") || !(*k)["extends"].is_string() || !cases.contains((*k)["extends"].get<std::string>()))
+        break;
+      k = &cases[(*k)["extends"].get<std::string>()];
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -93,10 +153,10 @@ nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extra
   std::vector<ExtrapolationRow> fits;
   std::vector<UncertaintyRow> unc;
   extrapolation_rows(ex, points, fits, unc);
-  store.store_extrapolation(series.id, fits, unc);
-  spdlog::info("series {} complete: {} converged of {}; extrapolation {}{}", series.key.label(), h.size(),
-               points.size(), ex.value("status", std::string("?")),
-               num(ex, "f0") ? " f0 = " + std::to_string(*num(ex, "f0")) : std::string());
+  const VerdictRow verdict = verdict_row(ex, static_cast<int>(h.size()));
+  store.store_extrapolation(series.id, fits, unc, verdict);
+  spdlog::info("series {} complete: {} converged of {}; {}", series.key.label(), h.size(), points.size(),
+               verdict_log_text(ex, verdict));
   return ex;
 }
 
@@ -129,6 +189,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   d.extrapolation_method = settings.method;
   d.p_low = settings.p_low;
   d.p_high = settings.p_high;
+  d.generator_kinds = generator_kinds(store.study_definition(study_id));
   for (const auto& s : store.series_of_study(study_id)) {
     SeriesData sd;
     sd.id = s.id;

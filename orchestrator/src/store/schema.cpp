@@ -225,6 +225,43 @@ ALTER TABLE jobs ADD COLUMN queue_state TEXT;
 ALTER TABLE jobs ADD COLUMN queue_reason TEXT;
 )sql";
 
+// Step 4 — series verdicts (docs/EXTRAPOLATION.md "Verdicts"): one word per
+// series and its reasons as a JSON array of sentences, added to v_series.
+constexpr const char* kV4SeriesVerdict = R"sql(
+ALTER TABLE series ADD COLUMN verdict TEXT
+  CHECK (verdict IS NULL OR verdict IN ('converged','pre-asymptotic','unreliable','insufficient_grids'));
+ALTER TABLE series ADD COLUMN verdict_reasons TEXT;
+DROP VIEW v_series;
+CREATE VIEW v_series AS
+SELECT st.name        AS study,
+       se.id          AS series_id,
+       se.case_name   AS case_name,
+       se.convection  AS convection,
+       se.fwhm_dp     AS fwhm_dp,
+       se.drag        AS drag,
+       se.deposition  AS deposition,
+       se.status      AS series_status,
+       se.verdict     AS verdict,
+       se.verdict_reasons AS verdict_reasons,
+       e.status       AS extrapolation_status,
+       e.method       AS method,
+       e.f0           AS f0,
+       e.p            AS p,
+       e.sigma_re     AS sigma_re,
+       e.fs           AS fs,
+       (SELECT COUNT(*) FROM uncertainties n WHERE n.series_id = se.id) AS ng,
+       fu.delta_star  AS finest_delta_star,
+       fu.delta_star_nominal AS finest_delta_star_nominal,
+       fu.f           AS finest_dp_star,
+       fu.u           AS finest_u,
+       fu.rde         AS finest_rde
+FROM series se
+JOIN studies st ON st.id = se.study_id
+LEFT JOIN extrapolations e ON e.series_id = se.id AND e.chosen = 1
+LEFT JOIN uncertainties fu ON fu.series_id = se.id AND fu.delta_star =
+  (SELECT MIN(m.delta_star) FROM uncertainties m WHERE m.series_id = se.id);
+)sql";
+
 }  // namespace
 
 int schema_version(Database& db) {
@@ -247,6 +284,7 @@ void migrate(Database& db) {
   if (v < 1) db.exec(kV1);
   if (v < 2) db.exec(kV2NominalDeltaStar);
   if (v < 3) db.exec(kV3SlurmState);
+  if (v < 4) db.exec(kV4SeriesVerdict);
   db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   tx.commit();
 }

@@ -59,6 +59,13 @@ struct SeriesInfo {
   long long id = 0, study_id = 0;
   SeriesKey key;
   std::string status;
+  std::string verdict;           // converged | pre-asymptotic | unreliable | insufficient_grids | "" (none yet)
+  std::string verdict_reasons;   // JSON array of sentences, or ""
+};
+
+struct VerdictRow {              // docs/EXTRAPOLATION.md "Verdicts"
+  std::string value;
+  std::string reasons_json;      // JSON array of sentences
 };
 
 struct SeriesPoint {             // one job of a series, with its result if any
@@ -175,9 +182,11 @@ class Store {
   std::vector<SeriesInfo> series_of_study(long long study_id);
   std::vector<SeriesPoint> series_points(long long series_id);
 
-  // Stores both fits and the per-job uncertainties, marks the series done.
+  // Stores both fits, the per-job uncertainties and the verdict (when
+  // given), marks the series done.
   void store_extrapolation(long long series_id, const std::vector<ExtrapolationRow>& fits,
-                           const std::vector<UncertaintyRow>& uncertainties);
+                           const std::vector<UncertaintyRow>& uncertainties,
+                           const std::optional<VerdictRow>& verdict = std::nullopt);
   std::vector<ExtrapolationRow> extrapolations(long long series_id);
   std::vector<UncertaintyRow> uncertainties(long long series_id);
 

@@ -14,11 +14,14 @@ SeriesInfo read_series(const Statement& st) {
   s.key.drag = st.as_text(5);
   s.key.deposition = st.as_text(6);
   s.status = st.as_text(7);
+  s.verdict = st.as_text(8);
+  s.verdict_reasons = st.as_text(9);
   return s;
 }
 
 constexpr const char* kSeriesColumns =
-    "SELECT id, study_id, case_name, convection, fwhm_dp, drag, deposition, status FROM series ";
+    "SELECT id, study_id, case_name, convection, fwhm_dp, drag, deposition, status, COALESCE(verdict, ''), "
+    "COALESCE(verdict_reasons, '') FROM series ";
 
 }  // namespace
 
@@ -71,7 +74,8 @@ std::vector<SeriesPoint> Store::series_points(long long series_id) {
 }
 
 void Store::store_extrapolation(long long series_id, const std::vector<ExtrapolationRow>& fits,
-                                const std::vector<UncertaintyRow>& uncertainties) {
+                                const std::vector<UncertaintyRow>& uncertainties,
+                                const std::optional<VerdictRow>& verdict) {
   Transaction tx(db_);
   db_.prepare("DELETE FROM extrapolations WHERE series_id = ?").bind_all(series_id).run();
   db_.prepare("DELETE FROM uncertainties WHERE series_id = ?").bind_all(series_id).run();
@@ -91,6 +95,10 @@ void Store::store_extrapolation(long long series_id, const std::vector<Extrapola
     unc.bind_all(series_id, u.job_id, u.delta_star, u.f, u.u, u.rde).run();
   }
   db_.prepare("UPDATE series SET status = 'done' WHERE id = ?").bind_all(series_id).run();
+  if (verdict)
+    db_.prepare("UPDATE series SET verdict = ?, verdict_reasons = ? WHERE id = ?")
+        .bind_all(verdict->value, verdict->reasons_json, series_id)
+        .run();
   tx.commit();
 }
 

@@ -116,14 +116,32 @@ TEST(OrchestratorCli, ValidateAndPlanTheShippedStudies) {
   const auto dir = temp_dir("validate");
   auto out = run(dir, "validate " + quote((kSource / "studies/quickstart.json").string()));
   EXPECT_EQ(out.code, 0) << out.text;
-  EXPECT_NE(out.text.find("ok: 2 series, 12 jobs"), std::string::npos) << out.text;
+  EXPECT_NE(out.text.find("ok: 2 series, 10 jobs"), std::string::npos) << out.text;
+  EXPECT_EQ(out.text.find("warning"), std::string::npos) << out.text;  // 5 grids, finest Δ* 0.667
   out = run(dir, "validate " + quote((kSource / "studies/bursting_bubble_paper.json").string()));
   EXPECT_EQ(out.code, 0) << out.text;
   EXPECT_NE(out.text.find("ok: 12 series, 216 jobs"), std::string::npos) << out.text;
   out = run(dir, "plan --json " + quote((kSource / "studies/quickstart.json").string()));
   EXPECT_EQ(out.code, 0) << out.text;
-  EXPECT_EQ(nlohmann::json::parse(out.text)["jobs"], 12);
+  EXPECT_EQ(nlohmann::json::parse(out.text)["jobs"], 10);
   EXPECT_FALSE(fs::exists(dir / "gridfree.sqlite"));
+}
+
+// validate and plan warn (exit 0) about grids that cannot give a converged
+// verdict: 4 grids (1 degree of freedom), all coarser than Δ* = 2.
+TEST(OrchestratorCli, ValidateAndPlanWarnAboutCoarseOrFewGrids) {
+  const auto dir = temp_dir("warn");
+  std::ifstream in(kSource / "studies/quickstart.json");
+  auto doc = nlohmann::json::parse(in);
+  doc["grids"] = {{"delta_star", {4.0, 3.3, 2.8, 2.5}}};
+  const auto file = dir / "coarse.json";
+  std::ofstream(file) << doc.dump(2);
+  for (const char* cmd : {"validate ", "plan "}) {
+    const auto out = run(dir, cmd + quote(file.string()));
+    EXPECT_EQ(out.code, 0) << out.text;
+    EXPECT_NE(out.text.find("warning: 4 grid(s) leave 1 degree(s) of freedom"), std::string::npos) << out.text;
+    EXPECT_NE(out.text.find("warning: every grid is coarser than Δ* = 2"), std::string::npos) << out.text;
+  }
 }
 
 TEST(OrchestratorCli, BrokenStudiesExitTwoNameThePointerAndLeaveNoDatabase) {

@@ -228,5 +228,15 @@ TEST(ReportTextFormat, EscapesAndNumbers) {
   EXPECT_EQ(slugify("PC1 superbee fwhm6 bvk"), "PC1_superbee_fwhm6_bvk");
 }
 
+// f0 ± U: U to two significant digits, f0 to U's last digit.
+TEST(ReportText, ValueRoundedToTheDigitsItsUncertaintySupports) {
+  EXPECT_EQ(format_with_uncertainty(1010.7944, 12.712), "1011 ± 13");
+  EXPECT_EQ(format_with_uncertainty(1017.3920, 1.37), "1017.4 ± 1.4");
+  EXPECT_EQ(format_with_uncertainty(1158.8123, 0.0123), "1158.812 ± 0.012");
+  EXPECT_EQ(format_with_uncertainty(123456.0, 1234.0), "123500 ± 1200");
+  EXPECT_EQ(format_with_uncertainty(1158.8, std::nullopt), "1158.8");
+  EXPECT_EQ(format_with_uncertainty(1158.8, 0.0), "1158.8");
+}
+
 }  // namespace
 }  // namespace gridfree

@@ -1,9 +1,14 @@
 // Tests of the series digest, one-factor differences and table renderings,
 // on the synthetic study of report_test_data.h (expected values computed
 // here from the manufactured data, not read back from the report code).
+#include <cmath>
+
 #include <gtest/gtest.h>
 
+#include "report/cost_table.h"
 #include "report/differences.h"
+#include "report/report_charts.h"
+#include "report/svg_chart.h"
 #include "report/report_tables.h"
 #include "report/series_summary.h"
 #include "report_test_data.h"
@@ -86,6 +91,89 @@ TEST(ReportDifferences, FilterWidthAndDepositionAreFactors) {
   EXPECT_EQ(d[0].factor, "fwhm_dp");
   EXPECT_EQ(d[0].value_b, "8");
   EXPECT_EQ(d[1].factor, "deposition");
+}
+
+// U of each series' finest grid from the manufactured data: A (h = 0.5):
+// f = 1004, U = 1.25·4 + 0.5 = 5.5; B (h = 0.5, its 0.25 diverged): f = 1502.5,
+// U = 1.25·2.5 + 0.5 = 3.625. |1000 − 1500| = 500 > √(5.5² + 3.625²) = 6.587.
+TEST(ReportDifferences, DifferenceAgainstCombinedUncertaintyAndVerdicts) {
+  const auto s = summaries();
+  const auto d = one_factor_differences(s);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_DOUBLE_EQ(*d[0].u_a, 5.5);
+  EXPECT_DOUBLE_EQ(*d[0].u_b, 3.625);
+  EXPECT_NEAR(*d[0].u_combined, std::sqrt(5.5 * 5.5 + 3.625 * 3.625), 1e-12);
+  EXPECT_NEAR(*d[0].u_relative, 2 * *d[0].u_combined / 2500, 1e-15);
+  EXPECT_TRUE(*d[0].exceeds_u);
+  // The fake extrapolator gives no verdict: not converged, so the pair is marked.
+  EXPECT_FALSE(d[0].both_converged());
+  const Table t = differences_table(s, d);
+  EXPECT_EQ(t.rows[0].back().exact.rfind("⚠", 0), 0u);
+  EXPECT_FALSE(d[1].exceeds_u.has_value());  // C has no f0
+  EXPECT_EQ(d[1].verdict_b, "insufficient_grids");
+}
+
+TEST(ReportTables, PowerLawPAndCShownOnlyWhenThePowerLawIsChosen) {
+  const Table t = series_table(summaries());
+  std::size_t p = 0, c = 0, method = 0;
+  for (std::size_t i = 0; i < t.columns.size(); ++i) {
+    if (t.columns[i].name == "p") p = i;
+    if (t.columns[i].name == "c") c = i;
+    if (t.columns[i].name == "method") method = i;
+  }
+  EXPECT_EQ(t.rows[0][method].exact, "power");
+  EXPECT_EQ(t.rows[0][p].exact, "1");
+  EXPECT_EQ(t.rows[0][c].exact, "8");
+  EXPECT_EQ(t.rows[1][method].exact, "mixed");  // B: the fake chooses mixed for p = 2
+  EXPECT_EQ(t.rows[1][p].exact, "");
+  EXPECT_EQ(t.rows[1][c].exact, "");
+}
+
+// Series A (f = 1000 + 8h, U = 1.25·8h + 0.5): RDE = (10h + 0.5)/1000 =
+// 0.55, 1.05, 1.55, 2.05 % on h = 0.5, 1, 1.5, 2; CPU = 20/h³ s.
+TEST(ReportTables, CheapestGridForATargetRde) {
+  const auto s = summaries();
+  auto h_for = [&](double target) {
+    const GridPoint* g = cheapest_grid_for(s[0], target);
+    return g ? g->delta_star : -1.0;
+  };
+  EXPECT_EQ(h_for(0.10), 2.0);
+  EXPECT_EQ(h_for(0.0205), 2.0);  // meets the target exactly
+  EXPECT_EQ(h_for(0.02), 1.5);
+  EXPECT_EQ(h_for(0.01), 0.5);
+  EXPECT_EQ(h_for(0.005), -1.0);
+  const Table t = cost_table(s, {0.02, 0.005});
+  ASSERT_EQ(t.rows.size(), 4u);  // A and B; C has no extrapolation with U
+  EXPECT_EQ(t.rows[0][3].exact, "1.5");
+  EXPECT_DOUBLE_EQ(std::stod(t.rows[0][6].exact), 20 / (1.5 * 1.5 * 1.5));
+  EXPECT_EQ(t.rows[1][3].exact, "none: a finer grid is needed");
+}
+
+// B's chosen fit is the mixed one: its power law is drawn faded and
+// labelled "rejected", the mixed fit labelled "chosen" at full opacity.
+TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
+  const auto s = summaries();
+  const Chart chart = series_chart(s[1], 1);
+  int rejected = 0, chosen = 0;
+  for (const auto& c : chart.series) {
+    if (c.name.find("(rejected)") != std::string::npos) {
+      ++rejected;
+      EXPECT_TRUE(c.faded);
+      EXPECT_NE(c.name.find("power law"), std::string::npos);
+    }
+    if (c.name.find("(chosen)") != std::string::npos) {
+      ++chosen;
+      EXPECT_FALSE(c.faded);
+      EXPECT_NE(c.name.find("mixed"), std::string::npos);
+    }
+  }
+  EXPECT_EQ(rejected, 1);
+  EXPECT_EQ(chosen, 1);
+  const std::string svg = render_svg(chart);
+  EXPECT_NE(svg.find("stroke-opacity=\"0.35\""), std::string::npos);
+  // Each converged point carries its Δ* (B: 0.5, 1, 1.5, 2).
+  for (const char* label : {">0.5</text>", ">1</text>", ">1.5</text>", ">2</text>"})
+    EXPECT_NE(svg.find(label), std::string::npos) << label;
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {

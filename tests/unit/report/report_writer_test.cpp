@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include "report/chart_export.h"
 #include "report/report.h"
 #include "report_test_data.h"
 #include "xml_check.h"
@@ -92,14 +93,26 @@ class ReportWriter : public ::testing::Test {
 
 TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
   for (const char* name : {"report.md", "report.html", "grids.csv", "series.csv", "differences.csv", "gci.csv",
-                           "failures.csv", "fig2_rde.svg", "speed_accuracy.svg",
+                           "cost.csv", "failures.csv", "fig2_rde.svg", "speed_accuracy.svg",
                            "fig1_01_PC1_superbee_fwhm6_bvk.svg", "gci_01_PC1_superbee_fwhm6_bvk.svg",
                            "fig1_02_PC1_superbee_fwhm6_hkl.svg", "fig1_03_PC2_superbee_fwhm6_bvk.svg",
                            "gci_03_PC2_superbee_fwhm6_bvk.svg"}) {
     EXPECT_TRUE(fs::is_regular_file(dir_ / name)) << name;
   }
   EXPECT_EQ(files_.html, dir_ / "report.html");
-  EXPECT_EQ(files_.csv.size(), 5u);
+  EXPECT_EQ(files_.csv.size(), 6u);
+  // PDF and PNG beside every SVG when rsvg-convert is installed (install-deps.sh).
+  if (!find_svg_converter().empty()) {
+    for (const auto& svg : files_.svg) {
+      for (const char* ext : {".pdf", ".png"}) {
+        auto copy = svg;
+        copy.replace_extension(ext);
+        EXPECT_TRUE(fs::is_regular_file(copy)) << copy;
+        EXPECT_GT(fs::file_size(copy), 100u) << copy;
+      }
+    }
+    EXPECT_NE(read(dir_ / "report.html").find("fig2_rde.pdf"), std::string::npos);
+  }
   EXPECT_EQ(files_.svg.size(), 2u + 3u + 3u);  // overview + per-series fig1 + gci
   for (const auto& entry : fs::directory_iterator(dir_)) {
     EXPECT_NE(entry.path().filename().string().front(), '.') << "left over: " << entry.path();

@@ -157,6 +157,16 @@ TEST(Scheduler, EveryOutcomeIsRecordedAndTheStudyFinishes) {
   EXPECT_EQ(text("SELECT status FROM studies"), "failed");  // some jobs did not converge
   EXPECT_EQ(text("SELECT COUNT(*) FROM series WHERE status = 'done'"), "6");
   EXPECT_EQ(text("SELECT COUNT(*) FROM extrapolations"), "12");  // power + mixed per series
+  // Verdicts (docs/EXTRAPOLATION.md): every finished series has one. 'ok' has
+  // 4 exact grids f = 1159 + h: 1 degree of freedom → unreliable; 'noconv'
+  // has no converged grid → insufficient_grids.
+  EXPECT_EQ(text("SELECT COUNT(*) FROM series WHERE verdict IS NULL"), "0");
+  EXPECT_EQ(text("SELECT verdict FROM series WHERE case_name = 'ok'"), "unreliable");
+  EXPECT_NE(text("SELECT verdict_reasons FROM series WHERE case_name = 'ok'").find("1 degree(s) of freedom"),
+            std::string::npos);
+  EXPECT_EQ(text("SELECT verdict FROM series WHERE case_name = 'noconv'"), "insufficient_grids");
+  EXPECT_EQ(text("SELECT verdict || ' ' || round(f0, 6) || ' ' || finest_delta_star FROM v_series WHERE case_name = 'ok'"),
+            "unreliable 1159.0 1.0");
 
   const auto data = build_report_data(store, sub.study_id);
   EXPECT_EQ(data.study_name, "modes");

@@ -1,0 +1,147 @@
+// Verdict rules of docs/EXTRAPOLATION.md "Verdicts" (see verdict.h).
+#include "extrap/verdict.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace gridfree {
+namespace {
+
+std::string g4(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+std::string percent(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g %%", 100.0 * v);
+  return buf;
+}
+
+bool finite(const std::optional<double>& v) { return v && std::isfinite(*v); }
+
+std::string next_grid_advice(const Verdict& v, double r) {
+  if (!v.next_h) return {};
+  return "add the next finer grid Δ* = " + g4(*v.next_h) + " (the series' mean refinement ratio " + g4(r) + ")";
+}
+
+}  // namespace
+
+double mean_refinement_ratio(const std::vector<double>& h) {
+  if (h.size() < 2 || !(h.front() > 0)) return 1.0;
+  return std::pow(h.back() / h.front(), 1.0 / static_cast<double>(h.size() - 1));
+}
+
+Verdict verdict_without_fit(int n_grids, const std::string& why) {
+  Verdict v;
+  v.checks.n_grids = n_grids;
+  v.checks.dof = std::max(0, n_grids - 3);
+  if (n_grids < 4) {
+    v.value = "insufficient_grids";
+    v.reasons.push_back(std::to_string(n_grids) +
+                        " converged grid(s): the least-squares fit needs at least 4, a converged verdict 5");
+  } else {
+    v.value = "unreliable";
+    v.reasons.push_back(why);
+  }
+  return v;
+}
+
+Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, const VerdictRules& rules) {
+  const int n = static_cast<int>(r.grids.size());
+  std::vector<double> h, f;
+  for (const auto& g : r.grids) {
+    h.push_back(g.h);
+    f.push_back(g.f);
+  }
+  const double ratio = mean_refinement_ratio(h);
+  const std::optional<double> next_h = n >= 2 ? std::optional<double>(h.front() / ratio) : std::nullopt;
+
+  if (r.status == "insufficient_grids" || n < 4) {
+    Verdict v = verdict_without_fit(n, {});
+    v.next_h = next_h;
+    if (next_h) v.reasons.push_back(next_grid_advice(v, ratio));
+    return v;
+  }
+
+  Verdict v;
+  v.next_h = next_h;
+  VerdictChecks& c = v.checks;
+  c.n_grids = n;
+  c.dof = n - 3;
+  c.p = r.p;
+  c.sigma_over_range = r.sigma_over_range;
+  if (finite(r.grids.front().rde)) c.rde_finest = r.grids.front().rde;
+
+  if (r.method && *r.method == "constant") {
+    v.value = "converged";
+    v.reasons.push_back("f is the same on every grid: no discretization error is visible");
+    c.order_in_range = c.good_fit = c.inside_envelope = true;
+    v.next_h.reset();
+    return v;
+  }
+
+  const auto [lo_it, hi_it] = std::minmax_element(f.begin(), f.end());
+  if (finite(r.data_range)) {
+    c.envelope_low = *lo_it - rules.envelope_k * *r.data_range;
+    c.envelope_high = *hi_it + rules.envelope_k * *r.data_range;
+  }
+  c.inside_envelope = finite(r.f0) && c.envelope_low && *r.f0 >= *c.envelope_low && *r.f0 <= *c.envelope_high;
+  c.order_in_range = finite(r.p) && *r.p >= opts.p_low && *r.p <= opts.p_high;
+  c.good_fit = finite(r.sigma_over_range) && *r.sigma_over_range < 1.0;
+
+  // Rules that make the extrapolation unreliable.
+  std::vector<std::string> unreliable;
+  if (!finite(r.f0)) unreliable.push_back("no extrapolated value f0 could be computed");
+  if (c.dof < rules.min_dof)
+    unreliable.push_back(std::to_string(n) + " grids leave " + std::to_string(c.dof) +
+                         " degree(s) of freedom for the 3-parameter fit; at least " +
+                         std::to_string(rules.min_dof) + " are needed (" +
+                         std::to_string(3 + rules.min_dof) + " grids)");
+  if (finite(r.f0) && c.envelope_low && !c.inside_envelope)
+    unreliable.push_back("f0 = " + g4(*r.f0) + " lies outside the data envelope [" + g4(*c.envelope_low) + ", " +
+                         g4(*c.envelope_high) + "] (min f − " + g4(rules.envelope_k) + " R_f, max f + " +
+                         g4(rules.envelope_k) + " R_f): the fit extrapolates far beyond what the grids show");
+  if (c.rde_finest && *c.rde_finest > rules.rde_unreliable)
+    unreliable.push_back("the finest grid's RDE " + percent(*c.rde_finest) + " exceeds " +
+                         percent(rules.rde_unreliable));
+
+  // Conditions a converged series must also meet.
+  std::vector<std::string> missing;
+  if (!c.order_in_range)
+    missing.push_back(finite(r.p) ? "observed order p = " + g4(*r.p) + " is outside the accepted range [" +
+                                        g4(opts.p_low) + ", " + g4(opts.p_high) + "]"
+                                  : "no observed order p was found (the power law has no interior minimum)");
+  if (!c.good_fit)
+    missing.push_back(finite(r.sigma_over_range)
+                          ? "the fit does not describe the data: σ_RE/R_f = " + g4(*r.sigma_over_range) + " ≥ 1"
+                          : "the fit quality σ_RE/R_f is undefined");
+  if (c.rde_finest && *c.rde_finest > rules.rde_converged && *c.rde_finest <= rules.rde_unreliable)
+    missing.push_back("the finest grid's RDE " + percent(*c.rde_finest) + " exceeds " +
+                      percent(rules.rde_converged));
+  if (!c.rde_finest && finite(r.f0)) missing.push_back("the finest grid's RDE is undefined (f0 = 0)");
+
+  if (!unreliable.empty()) {
+    v.value = "unreliable";
+    v.reasons = unreliable;
+    v.reasons.insert(v.reasons.end(), missing.begin(), missing.end());
+  } else if (!missing.empty()) {
+    v.value = "pre-asymptotic";
+    v.reasons = missing;
+  } else {
+    v.value = "converged";
+    v.reasons.push_back("p = " + g4(*r.p) + " in [" + g4(opts.p_low) + ", " + g4(opts.p_high) +
+                        "], σ_RE/R_f = " + g4(*r.sigma_over_range) + " < 1, f0 inside the data envelope, " +
+                        std::to_string(c.dof) + " degrees of freedom, finest-grid RDE " +
+                        percent(*c.rde_finest) + " ≤ " + percent(rules.rde_converged));
+    v.next_h.reset();
+    return v;
+  }
+  v.reasons.push_back(next_grid_advice(v, ratio) +
+                      (c.dof < rules.min_dof ? " or more grids in the same range" : ""));
+  return v;
+}
+
+}  // namespace gridfree

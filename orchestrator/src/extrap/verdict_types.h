@@ -1,0 +1,26 @@
+// The verdict of one series and the numbers its rules looked at
+// (docs/EXTRAPOLATION.md "Verdicts"; computed by judge() in verdict.h).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gridfree {
+
+// The numbers each rule looked at (empty when they cannot be computed).
+struct VerdictChecks {
+  int n_grids = 0, dof = 0;
+  std::optional<double> envelope_low, envelope_high;  // min f − k R_f, max f + k R_f
+  std::optional<double> rde_finest, sigma_over_range, p;
+  bool order_in_range = false, good_fit = false, inside_envelope = false;
+};
+
+struct Verdict {
+  std::string value;                 // converged | pre-asymptotic | unreliable | insufficient_grids
+  std::vector<std::string> reasons;  // in words, each naming the rule and its numbers
+  std::optional<double> next_h;      // suggested finer grid (pre-asymptotic, unreliable, insufficient)
+  VerdictChecks checks;
+};
+
+}  // namespace gridfree

@@ -1,0 +1,22 @@
+// "What does a target cost": for every series and target RDE, the cheapest
+// converged grid whose RDE (docs/PHYSICS.md §8, a-priori from the series'
+// extrapolation) meets the target, with its CPU time and the
+// machine-independent cost cells × iterations. Cheapest = least CPU time;
+// a target no grid meets says "none: a finer grid is needed".
+#pragma once
+
+#include <vector>
+
+#include "report/series_summary.h"
+#include "report/table.h"
+
+namespace gridfree {
+
+inline const std::vector<double> kTargetRdes{0.10, 0.05, 0.02, 0.01, 0.005};
+
+// One grid of a series that meets `target` at the least CPU time, or null.
+const GridPoint* cheapest_grid_for(const SeriesSummary& s, double target);
+
+Table cost_table(const std::vector<SeriesSummary>& series, const std::vector<double>& targets = kTargetRdes);
+
+}  // namespace gridfree

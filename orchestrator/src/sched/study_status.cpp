@@ -1,0 +1,130 @@
+// Inside view of one study for `gridfree status STUDY` (see study_status.h).
+#include "sched/study_status.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "sched/study_eta.h"
+#include "study/study_plan.h"
+
+namespace gridfree {
+namespace {
+
+nlohmann::json opt(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+std::string cell(const nlohmann::json& v, const char* fmt) {
+  if (!v.is_number()) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v.get<double>());
+  return buf;
+}
+
+nlohmann::json series_row(Store& store, const SeriesInfo& s) {
+  int done = 0, total = 0;
+  for (const auto& p : store.series_points(s.id)) {
+    ++total;
+    if (p.job_status == "done" || p.job_status == "failed") ++done;
+  }
+  std::optional<double> f0;
+  for (const auto& e : store.extrapolations(s.id))
+    if (e.chosen) f0 = e.f0;
+  std::optional<double> rde;
+  double finest = INFINITY;
+  for (const auto& u : store.uncertainties(s.id))
+    if (u.delta_star < finest) {
+      finest = u.delta_star;
+      rde = u.rde;
+    }
+  return {{"series", s.key.label()}, {"grids_done", done},  {"grids", total}, {"status", s.status},
+          {"verdict", s.verdict.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.verdict)},
+          {"f0", opt(f0)},           {"finest_rde", opt(rde)}};
+}
+
+}  // namespace
+
+std::optional<nlohmann::json> read_job_progress(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  auto j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return std::nullopt;
+  return j;
+}
+
+nlohmann::json study_detail(Store& store, long long study_id, const std::filesystem::path& runs_root, int workers) {
+  nlohmann::json series = nlohmann::json::array(), running = nlohmann::json::array();
+  std::vector<EtaJob> eta_jobs;
+  int running_count = 0;
+  for (const auto& s : store.series_of_study(study_id)) {
+    series.push_back(series_row(store, s));
+    for (const auto& p : store.series_points(s.id)) {
+      EtaJob e;
+      e.model_s = estimated_seconds(p.cells, 1);
+      if (p.job_status == "done" || p.job_status == "failed") {
+        e.state = EtaJob::State::kDone;
+        e.wall_s = p.wall_s;
+      } else if (p.job_status == "running") {
+        ++running_count;
+        e.state = EtaJob::State::kRunning;
+        const auto dir = runs_root / p.job_hash;
+        const auto prog = read_job_progress(dir / "progress.json");
+        if (prog && (*prog)["elapsed_s"].is_number()) e.elapsed_s = (*prog)["elapsed_s"].get<double>();
+        nlohmann::json r = {{"series", s.key.label()},
+                            {"delta_star", p.delta_star},
+                            {"cells", {p.cells[0], p.cells[1], p.cells[2]}},
+                            {"log", (dir / "worker.log").string()}};
+        for (const char* k : {"iteration", "continuity", "momentum", "dp_star", "elapsed_s"})
+          r[k] = prog && prog->contains(k) ? (*prog)[k] : nlohmann::json(nullptr);
+        running.push_back(r);
+      } else if (p.job_status == "cancelled") {
+        continue;
+      }
+      eta_jobs.push_back(e);
+    }
+  }
+  const Eta eta = estimate_eta(eta_jobs, workers > 0 ? workers : std::max(1, running_count));
+  return {{"series", series},
+          {"running", running},
+          {"eta", {{"seconds", eta.eta_s}, {"text", hours_minutes(eta.eta_s)}, {"model_scale", eta.scale}}}};
+}
+
+std::string study_detail_text(const nlohmann::json& d) {
+  std::string out;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-34s %7s %-18s %12s %9s\n", "series", "grids", "verdict", "f0", "RDE fine");
+  out += line;
+  for (const auto& s : d["series"]) {
+    const std::string grids = std::to_string(s["grids_done"].get<int>()) + "/" + std::to_string(s["grids"].get<int>());
+    const std::string verdict = s["verdict"].is_string() ? s["verdict"].get<std::string>() : "(" + s["status"].get<std::string>() + ")";
+    const std::string rde = s["finest_rde"].is_number() ? cell(s["finest_rde"].get<double>() * 100, "%.2f %%") : "-";
+    std::snprintf(line, sizeof line, "%-34s %7s %-18s %12s %9s\n", s["series"].get<std::string>().c_str(),
+                  grids.c_str(), verdict.c_str(), cell(s["f0"], "%.4f").c_str(), rde.c_str());
+    out += line;
+  }
+  if (!d["running"].empty()) {
+    out += "\nrunning jobs\n";
+    std::snprintf(line, sizeof line, "%-34s %7s %-14s %9s %10s %10s %12s %9s  %s\n", "series", "Δ*", "cells",
+                  "iteration", "continuity", "momentum", "dp*", "elapsed", "log");
+    out += line;
+    for (const auto& r : d["running"]) {
+      const auto& c = r["cells"];
+      const std::string cells = std::to_string(c[0].get<int>()) + "x" + std::to_string(c[1].get<int>()) + "x" +
+                                std::to_string(c[2].get<int>());
+      const std::string elapsed = cell(r["elapsed_s"], "%.0f s");
+      std::snprintf(line, sizeof line, "%-34s %7s %-14s %9s %10s %10s %12s %9s  %s\n",
+                    r["series"].get<std::string>().c_str(), cell(r["delta_star"], "%.4g").c_str(), cells.c_str(),
+                    cell(r["iteration"], "%.0f").c_str(), cell(r["continuity"], "%.2e").c_str(),
+                    cell(r["momentum"], "%.2e").c_str(), cell(r["dp_star"], "%.6g").c_str(), elapsed.c_str(),
+                    r["log"].get<std::string>().c_str());
+      out += line;
+    }
+  }
+  if (d["running"].empty() && d["eta"]["seconds"].get<double>() <= 0) return out + "\nnothing left to run\n";
+  out += "\nETA " + d["eta"]["text"].get<std::string>() + " (cost model × " + cell(d["eta"]["model_scale"], "%.2g") +
+         " from the finished jobs)\n";
+  return out;
+}
+
+}  // namespace gridfree
