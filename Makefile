@@ -50,9 +50,11 @@ fuzz:
 	@set -e; for t in $(FUZZ_TARGETS); do \
 	  name=$${t#fuzz_}; mkdir -p $(FUZZ_BUILD)/corpus/$$name fuzz/corpus/$$name; \
 	  echo "== $$t: $(FUZZ_SECONDS) s"; \
-	  $(FUZZ_BUILD)/bin/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+	  rc=0; $(FUZZ_BUILD)/bin/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
 	    -artifact_prefix=$(FUZZ_BUILD)/$$name- -print_final_stats=1 \
-	    $(FUZZ_BUILD)/corpus/$$name fuzz/corpus/$$name 2>&1 | grep -E "^#|Done|ERROR|stat::number_of_executed_units|crash-|timeout-" | tail -4; \
+	    $(FUZZ_BUILD)/corpus/$$name fuzz/corpus/$$name >$(FUZZ_BUILD)/$$name.log 2>&1 || rc=$$?; \
+	  grep -E "ERROR|SUMMARY|stat::number_of_executed_units|Test unit written" $(FUZZ_BUILD)/$$name.log | tail -4; \
+	  [ $$rc -eq 0 ] || { echo "$$t failed (exit $$rc): see $(FUZZ_BUILD)/$$name.log"; exit 1; }; \
 	done
 
 demo: build

@@ -90,7 +90,7 @@ TEST(ExtrapSeriesIo, ParsesJson) {
 TEST(ExtrapSeriesIo, JsonProblemsHavePointers) {
   expect_problem([] { parse_series_json(R"({"h": [1, "a"], "f": [1, 2]})", "s.json"); }, "/h/1", "number");
   expect_problem([] { parse_series_json(R"({"f": [1, 2]})", "s.json"); }, "/h", "missing");
-  expect_problem([] { parse_series_json(R"({"h": [1, 2], "f": [1, NaN]})", "s.json"); }, "s.json", "invalid JSON");
+  expect_problem([] { parse_series_json(R"({"h": [1, 2], "f": [1, NaN]})", "s.json"); }, "s.json:1:24", "invalid JSON");
   expect_problem([] { parse_series_json(R"([1, 2])", "s.json"); }, "s.json", "object");
 }
 

@@ -54,6 +54,26 @@ std::optional<Violation> scan(std::string_view text) {
   return std::nullopt;
 }
 
+// `s` with control characters and bytes that are not part of a well-formed
+// UTF-8 sequence replaced by '?', so a message never carries them to a terminal.
+std::string printable(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    bool ok = len > 0 && i + len <= s.size();
+    for (std::size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) & 0xC0) == 0x80;
+    if (!ok || (len == 1 && (c < 0x20 || c == 0x7F))) {
+      out += '?';
+      ++i;
+    } else {
+      out.append(s, i, len);
+      i += len;
+    }
+  }
+  return out;
+}
+
 // nlohmann's what(): "[json.exception.parse_error.101] parse error at line 3,
 // column 5: syntax error while parsing ..." -> the part after "column N: ".
 std::string parse_reason(const std::string& what) {
@@ -64,7 +84,7 @@ std::string parse_reason(const std::string& what) {
     reason = what.substr(bracket + 2);
   }
   if (reason.size() > kMaxReasonLength) reason = reason.substr(0, kMaxReasonLength) + "...";
-  return reason;
+  return printable(reason);
 }
 
 }  // namespace
