@@ -6,7 +6,6 @@
 // diverged or failed deposition (result written, with the reason); 2 invalid
 // input (nothing written); 1 internal error.
 #include <malloc.h>
-#include <omp.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -16,7 +15,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include <spdlog/spdlog.h>
 
@@ -26,6 +24,7 @@
 #include "flow/solve.h"
 #include "job/job_spec.h"
 #include "job/result.h"
+#include "thread_count.h"
 
 namespace gridfree::worker_cli {
 namespace {
@@ -33,7 +32,7 @@ namespace {
 struct SolveCommandOptions {
   std::string job_file;
   std::string output;
-  int threads = 0;  // 0 = all cores
+  int threads = 0;  // 0 = OMP_NUM_THREADS, else all cores
   std::string vtk_dir;
   bool verbose = false;
   bool quiet = false;
@@ -56,9 +55,7 @@ int run_solve(const SolveCommandOptions& o) {
   if (o.quiet) spdlog::set_level(spdlog::level::warn);
   else if (o.verbose) spdlog::set_level(spdlog::level::debug);
   else spdlog::set_level(spdlog::level::info);
-  if (o.threads < 0) throw InputError("--threads", "must be a positive number of threads");
-  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  omp_set_num_threads(threads);
+  const int threads = use_thread_count(o.threads);
   // Keep freed work arrays in the heap: the outer iterations allocate
   // same-sized vectors over and over, and returning them to the kernel each
   // time costs page faults (measured: about a third of the CPU time).
@@ -116,7 +113,7 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("solve", "solve one job: steady gas flow through a frozen bed on one grid");
   sub->add_option("job", opts->job_file, "job JSON file")->required();
   sub->add_option("-o,--output", opts->output, "result JSON file (default: stdout)");
-  sub->add_option("--threads", opts->threads, "OpenMP threads (default: all cores)");
+  sub->add_option("--threads", opts->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all cores)");
   sub->add_option("--vtk", opts->vtk_dir, "write the final fields as legacy VTK into this folder");
   sub->add_flag("-v,--verbose", opts->verbose, "debug output");
   sub->add_flag("-q,--quiet", opts->quiet, "warnings and errors only");

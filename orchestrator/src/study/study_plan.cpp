@@ -39,6 +39,7 @@ Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, i
   Plan plan;
   plan.workers = std::max(1, workers);
   const int threads = std::max(1, cores / plan.workers);
+  plan.threads_per_worker = threads;
   plan.rows.resize(expanded.series.size());
   for (std::size_t s = 0; s < expanded.series.size(); ++s) plan.rows[s].series = expanded.series[s].label();
   for (const auto& job : expanded.jobs) {
@@ -82,6 +83,7 @@ nlohmann::json plan_to_json(const Plan& plan) {
           {"max_memory_bytes", plan.max_memory_bytes},
           {"seconds", plan.seconds},
           {"workers", plan.workers},
+          {"threads_per_worker", plan.threads_per_worker},
           {"wall_seconds", plan.wall_seconds},
           {"model",
            {{"bytes_per_cell", kBytesPerCell},
@@ -128,8 +130,10 @@ std::string plan_to_table(const Plan& plan) {
                 static_cast<unsigned long long>(plan.cells),
                 human_bytes(plan.max_memory_bytes).c_str(), human_seconds(plan.seconds).c_str());
   out += line;
-  std::snprintf(line, sizeof line, "estimated wall time with %d workers: %s (model: %.0f B/cell, %.1e s per cell-iteration)\n",
-                plan.workers, human_seconds(plan.wall_seconds).c_str(), kBytesPerCell,
+  std::snprintf(line, sizeof line,
+                "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell, %.1e s per "
+                "cell-iteration)\n",
+                plan.workers, plan.threads_per_worker, human_seconds(plan.wall_seconds).c_str(), kBytesPerCell,
                 kSecondsPerCellIteration);
   out += line;
   return out;

@@ -50,6 +50,7 @@ struct Plan {
   double max_memory_bytes = 0;
   double seconds = 0;            // serial total
   int workers = 1;
+  int threads_per_worker = 1;    // cores / workers, at least 1 (each worker's --threads)
   double wall_seconds = 0;       // seconds / workers (perfect packing, a lower bound)
 };
 
