@@ -1,4 +1,4 @@
-// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--vtk DIR] [-v|-q]
+// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--start nested|analytic] [--vtk DIR] [-v|-q]
 //
 // Parses the job (relative paths against the job file's folder), solves it,
 // and writes the result JSON atomically (temporary file + rename; stdout
@@ -34,6 +34,7 @@ struct SolveCommandOptions {
   std::string output;
   int threads = 0;  // 0 = OMP_NUM_THREADS, else all cores
   std::string vtk_dir;
+  std::string start = "nested";
   bool verbose = false;
   bool quiet = false;
 };
@@ -69,6 +70,7 @@ int run_solve(const SolveCommandOptions& o) {
 
   // 2. Solve, with progress every ~2 s.
   SolveOptions options;
+  options.nested_start = o.start == "nested";
   if (!o.vtk_dir.empty()) options.vtk_dir = std::filesystem::path(o.vtk_dir);
   const auto start = std::chrono::steady_clock::now();
   auto last = start;
@@ -114,6 +116,11 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("job", opts->job_file, "job JSON file")->required();
   sub->add_option("-o,--output", opts->output, "result JSON file (default: stdout)");
   sub->add_option("--threads", opts->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all cores)");
+  sub->add_option("--start", opts->start,
+                  "nested: from the solution on a grid with half the cells per axis (grids of 20000 cells or "
+                  "more); analytic: from the plug-flow warm start only")
+      ->check(CLI::IsMember({"nested", "analytic"}))
+      ->capture_default_str();
   sub->add_option("--vtk", opts->vtk_dir, "write the final fields as legacy VTK into this folder");
   sub->add_flag("-v,--verbose", opts->verbose, "debug output");
   sub->add_flag("-q,--quiet", opts->quiet, "warnings and errors only");
