@@ -26,7 +26,9 @@ double estimated_memory_bytes(const std::array<int, 3>& cells) {
 }
 
 double estimated_iterations(const std::array<int, 3>& cells) {
-  return kBaseIterations + kIterationsPerCellRoot * std::cbrt(cell_count(cells));
+  const double n = cell_count(cells);
+  if (n >= kNestedMinCells) return kNestedIterations;
+  return kBaseIterations + kIterationsPerCellRoot * std::cbrt(n);
 }
 
 double estimated_seconds(const std::array<int, 3>& cells, int threads) {
@@ -63,8 +65,9 @@ Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, i
 
 // "a + b N^(1/3)" from the constants of the iteration model.
 static std::string iterations_model_text() {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g + %g N^(1/3)", kBaseIterations, kIterationsPerCellRoot);
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%g + %g N^(1/3) below %g cells, else %g (nested start)", kBaseIterations,
+                kIterationsPerCellRoot, kNestedMinCells, kNestedIterations);
   return buf;
 }
 

@@ -6,7 +6,9 @@
 #include "verify/verify.h"
 
 #include <algorithm>
+#include <exception>
 #include <functional>
+#include <string>
 
 #include "verify/filter_order.h"
 #include "verify/manufactured_flow.h"
@@ -47,7 +49,12 @@ std::vector<OrderStudy> run_code_verification(const VerifyOptions& options) {
 #pragma omp parallel for schedule(dynamic, 1)
   for (long t = 0; t < count; ++t) {
     const Task& task = tasks[std::size_t(t)];
-    outcomes[task.study][task.grid] = solve[task.study](task.n);
+    GridOutcome& out = outcomes[task.study][task.grid];
+    try {  // an exception must not leave the parallel region
+      out = solve[task.study](task.n);
+    } catch (const std::exception& e) {
+      out.failure = std::string("grid ") + std::to_string(task.n) + ": " + e.what();
+    }
   }
 
   for (std::size_t s = 0; s < studies.size(); ++s) {
