@@ -11,7 +11,9 @@
 # (3.84 M cells); --finest adds Δ* = 0.16 (187 × 1250 × 62 = 14.5 M cells,
 # several GB: only on an otherwise idle machine). --csv also writes the rows
 # to FILE. Jobs and results go to a temporary folder. Print `uptime` with
-# the figures: timings on a shared machine are noisy.
+# the figures: timings on a shared machine are noisy. `iter` and cell_it/s
+# count the fine grid's outer iterations; `nested` is the wall time of the
+# coarser grids of the nested start (docs/SOLVER.md), included in wall_s.
 set -euo pipefail
 if [[ $# -lt 1 ]]; then
   echo "usage: $0 BIN_DIR [--quick] [--finest] [--only bubble|sscp] [--threads N] [--csv FILE]" >&2
