@@ -27,10 +27,10 @@ build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 test: test-deps build
-	@cd $(BUILD) && OMP_WAIT_POLICY=passive ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
 test-unit: build
-	@cd $(BUILD) && OMP_WAIT_POLICY=passive ctest --output-on-failure -j $(JOBS) -L unit
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L unit
 
 # Unit and integration tests under AddressSanitizer + UndefinedBehaviorSanitizer
 # (GCC); verification tests are skipped (minutes of numerics, no new paths).

@@ -4,6 +4,8 @@
 
 #include <thread>
 
+#include <spdlog/spdlog.h>
+
 #include "core/input_error.h"
 #include "exec/executor.h"
 #include "commands.h"
@@ -52,6 +54,7 @@ SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, do
   SchedulerOptions o;
   o.workers = jobs;
   o.threads_per_job = std::max(1, default_jobs() / jobs);
+  spdlog::info("{} job(s) at a time, {} thread(s) each ({} cores)", jobs, o.threads_per_job, default_jobs());
   o.timeout_s = timeout_s;
   o.runs_root = runs_root_for(db);
   o.owner = this_process_owner();

@@ -1,5 +1,5 @@
-// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--vtk DIR]
-//                       [--progress FILE] [-v|-q]
+// gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--start nested|analytic]
+//                       [--vtk DIR] [--max-memory SIZE] [--progress FILE] [-v|-q]
 //
 // Parses the job (relative paths against the job file's folder), solves it,
 // and writes the result JSON atomically (temporary file + rename; stdout
@@ -9,7 +9,6 @@
 // (iteration, residuals, dp_star, elapsed, cells; docs/INTERFACE.md) rewritten
 // atomically with every progress log line (≈ every 2 s) for `gridfree status`.
 #include <malloc.h>
-#include <omp.h>
 #include <unistd.h>
 
 #include <array>
@@ -20,7 +19,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include <spdlog/spdlog.h>
 
@@ -31,6 +29,7 @@
 #include "job/job_spec.h"
 #include "job/memory_estimate.h"
 #include "job/result.h"
+#include "thread_count.h"
 
 namespace gridfree::worker_cli {
 namespace {
@@ -38,10 +37,11 @@ namespace {
 struct SolveCommandOptions {
   std::string job_file;
   std::string output;
-  int threads = 0;  // 0 = all cores
+  int threads = 0;  // 0 = OMP_NUM_THREADS, else all cores
   std::string vtk_dir;
   std::string max_memory;  // "" = physical memory
   std::string progress_file;
+  std::string start = "nested";
   bool verbose = false;
   bool quiet = false;
 };
@@ -96,9 +96,7 @@ int run_solve(const SolveCommandOptions& o) {
   if (o.quiet) spdlog::set_level(spdlog::level::warn);
   else if (o.verbose) spdlog::set_level(spdlog::level::debug);
   else spdlog::set_level(spdlog::level::info);
-  if (o.threads < 0) throw InputError("--threads", "must be a positive number of threads");
-  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  omp_set_num_threads(threads);
+  const int threads = use_thread_count(o.threads);
   // Keep freed work arrays in the heap: the outer iterations allocate
   // same-sized vectors over and over, and returning them to the kernel each
   // time costs page faults (measured: about a third of the CPU time).
@@ -113,6 +111,7 @@ int run_solve(const SolveCommandOptions& o) {
 
   // 2. Solve, with progress every ~2 s.
   SolveOptions options;
+  options.nested_start = o.start == "nested";
   if (!o.vtk_dir.empty()) options.vtk_dir = std::filesystem::path(o.vtk_dir);
   const auto start = std::chrono::steady_clock::now();
   auto last = start;
@@ -164,7 +163,12 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("solve", "solve one job: steady gas flow through a frozen bed on one grid");
   sub->add_option("job", opts->job_file, "job JSON file")->required();
   sub->add_option("-o,--output", opts->output, "result JSON file (default: stdout)");
-  sub->add_option("--threads", opts->threads, "OpenMP threads (default: all cores)");
+  sub->add_option("--threads", opts->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all cores)");
+  sub->add_option("--start", opts->start,
+                  "nested: from the solution on a grid with half the cells per axis (grids of 20000 cells or "
+                  "more); analytic: from the plug-flow warm start only")
+      ->check(CLI::IsMember({"nested", "analytic"}))
+      ->capture_default_str();
   sub->add_option("--max-memory", opts->max_memory,
                   "refuse jobs whose estimated memory exceeds this (e.g. 8G; default: physical memory)");
   sub->add_option("--vtk", opts->vtk_dir, "write the final fields as legacy VTK into this folder");

@@ -10,9 +10,11 @@
 #include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "core/version.h"
+#include "openmp_waiting.h"
 
 int main(int argc, char** argv) {
   using namespace gridfree;
+  worker_cli::use_default_openmp_waiting(argv);
   spdlog::set_default_logger(spdlog::stderr_color_mt("gridfree-worker"));
   spdlog::set_pattern("%^[%l]%$ %v");
 

@@ -26,7 +26,9 @@ double estimated_memory_bytes(const std::array<int, 3>& cells) {
 }
 
 double estimated_iterations(const std::array<int, 3>& cells) {
-  return kBaseIterations + kIterationsPerCellRoot * std::cbrt(cell_count(cells));
+  const double n = cell_count(cells);
+  if (n >= kNestedMinCells) return kNestedIterations;
+  return kBaseIterations + kIterationsPerCellRoot * std::cbrt(n);
 }
 
 double estimated_seconds(const std::array<int, 3>& cells, int threads) {
@@ -39,6 +41,7 @@ Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, i
   Plan plan;
   plan.workers = std::max(1, workers);
   const int threads = std::max(1, cores / plan.workers);
+  plan.threads_per_worker = threads;
   plan.rows.resize(expanded.series.size());
   for (std::size_t s = 0; s < expanded.series.size(); ++s) plan.rows[s].series = expanded.series[s].label();
   for (const auto& job : expanded.jobs) {
@@ -62,8 +65,9 @@ Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, i
 
 // "a + b N^(1/3)" from the constants of the iteration model.
 static std::string iterations_model_text() {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g + %g N^(1/3)", kBaseIterations, kIterationsPerCellRoot);
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%g + %g N^(1/3) below %g cells, else %g (nested start)", kBaseIterations,
+                kIterationsPerCellRoot, kNestedMinCells, kNestedIterations);
   return buf;
 }
 
@@ -82,6 +86,7 @@ nlohmann::json plan_to_json(const Plan& plan) {
           {"max_memory_bytes", plan.max_memory_bytes},
           {"seconds", plan.seconds},
           {"workers", plan.workers},
+          {"threads_per_worker", plan.threads_per_worker},
           {"wall_seconds", plan.wall_seconds},
           {"model",
            {{"bytes_per_cell", kBytesPerCell},
@@ -128,8 +133,10 @@ std::string plan_to_table(const Plan& plan) {
                 static_cast<unsigned long long>(plan.cells),
                 human_bytes(plan.max_memory_bytes).c_str(), human_seconds(plan.seconds).c_str());
   out += line;
-  std::snprintf(line, sizeof line, "estimated wall time with %d workers: %s (model: %.0f B/cell, %.1e s per cell-iteration)\n",
-                plan.workers, human_seconds(plan.wall_seconds).c_str(), kBytesPerCell,
+  std::snprintf(line, sizeof line,
+                "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell, %.1e s per "
+                "cell-iteration)\n",
+                plan.workers, plan.threads_per_worker, human_seconds(plan.wall_seconds).c_str(), kBytesPerCell,
                 kSecondsPerCellIteration);
   out += line;
   return out;

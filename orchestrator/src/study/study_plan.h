@@ -18,15 +18,21 @@
 
 namespace gridfree {
 
-// Cost model, fitted to the bursting-bubble baseline (docs/BENCHMARKS.md,
-// solver/3, 2026-11-23): peak RSS 55.5 MB at 60 k cells and 396 MB at
-// 480 k → ≈ 850 B/cell plus a fixed part (the base below is kept generous);
-// SIMPLEC iterations 41, 65, 125, 229 at 1.6 k, 7.5 k, 60 k, 480 k cells
-// ≈ 20 + 2.65·N^(1/3); 1.7–1.8 µs of CPU per cell and iteration.
-inline constexpr double kBytesPerCell = 850.0;
+// Cost model, fitted to the bursting-bubble baseline (docs/BENCHMARKS.md).
+// solver/4, 2026-11-29: peak RSS 334 MB at 480 k cells → ≈ 730 B/cell
+// (kept at 750) plus a fixed part (the base below is kept generous).
+// Grids below kNestedMinCells start from the analytic warm start: SIMPLEC
+// iterations 41, 65 at 1.6 k, 7.5 k cells ≈ 20 + 2.65·N^(1/3) (solver/3,
+// 2026-11-23; 1.7–1.8 µs of CPU per cell and iteration). Larger grids start
+// from the solution on a grid with half the cells per axis (docs/SOLVER.md):
+// the CPU time of the whole nested solve was 35 (60 k) and 30 (480 k)
+// fine-grid iterations' worth, so kNestedIterations is used for them.
+inline constexpr double kBytesPerCell = 750.0;
 inline constexpr double kBaseBytes = 64.0 * 1024 * 1024;  // executable, particles, buffers
 inline constexpr double kBaseIterations = 20.0;
 inline constexpr double kIterationsPerCellRoot = 2.65;
+inline constexpr double kNestedMinCells = 20000;           // the worker's nested-start threshold
+inline constexpr double kNestedIterations = 35.0;
 inline constexpr double kSecondsPerCellIteration = 1.8e-6;  // one core
 
 std::uint64_t physical_memory_bytes();  // sysconf(_SC_PHYS_PAGES) · page size
@@ -50,6 +56,7 @@ struct Plan {
   double max_memory_bytes = 0;
   double seconds = 0;            // serial total
   int workers = 1;
+  int threads_per_worker = 1;    // cores / workers, at least 1 (each worker's --threads)
   double wall_seconds = 0;       // seconds / workers (perfect packing, a lower bound)
 };
 

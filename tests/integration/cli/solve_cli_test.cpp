@@ -141,4 +141,48 @@ TEST(SolveCli, MissingJobFileIsInvalidInput) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
 }
 
+// The worker binary with an environment prefix, through the shell.
+gridfree::test_support::CommandRun run_with_env(const std::string& env, const std::string& args, const fs::path& dir) {
+  const std::string worker = std::string(GRIDFREE_BIN_DIR) + "/gridfree-worker";
+  return gridfree::test_support::run_command("env " + env + " '" + worker + "' " + args, dir / "stderr.txt");
+}
+
+TEST(SolveCli, WithoutThreadsOptionOmpNumThreadsDecides) {
+  const fs::path dir = scratch("omp_num_threads");
+  nlohmann::json job = baseline_job("diffusion", {3, 20, 1});
+  job["case"]["particles"] = {{"uniform", {{"solids_fraction", 0.3}}}};
+  write(dir / "job.json", job);
+  const auto one = run_with_env("OMP_NUM_THREADS=1", "solve " + (dir / "job.json").string(), dir);
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_NE(one.err.find("with 1 thread(s)"), std::string::npos) << one.err;
+  const auto forced = run_with_env("OMP_NUM_THREADS=1", "solve " + (dir / "job.json").string() + " --threads 2", dir);
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_NE(forced.err.find("with 2 thread(s)"), std::string::npos) << forced.err;
+}
+
+// libgomp prints its settings at load (OMP_DISPLAY_ENV=verbose): the worker
+// loads it twice when it sets the passive default (GOMP_SPINCOUNT 0 the
+// second time), once when the user set a policy.
+TEST(SolveCli, IdleThreadsSleepUnlessTheUserChoseAPolicy) {
+  const fs::path dir = scratch("wait_policy");
+  const auto def = run_with_env("-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT OMP_DISPLAY_ENV=verbose", "--version", dir);
+  ASSERT_EQ(def.exit_code, 0) << def.err;
+  const std::string key = "GOMP_SPINCOUNT = '";
+  const auto last = def.err.rfind(key);
+  ASSERT_NE(last, std::string::npos) << def.err;
+  EXPECT_EQ(def.err.substr(last + key.size(), 2), "0'") << def.err;
+  const auto user = run_with_env("-u OMP_WAIT_POLICY GOMP_SPINCOUNT=1234 OMP_DISPLAY_ENV=verbose", "--version", dir);
+  ASSERT_EQ(user.exit_code, 0) << user.err;
+  EXPECT_NE(user.err.find(key + "1234'"), std::string::npos) << user.err;
+  EXPECT_EQ(user.err.find(key + "0'"), std::string::npos) << user.err;
+}
+
+TEST(SolveCli, UnknownStartIsInvalidInput) {
+  const fs::path dir = scratch("bad_start");
+  write(dir / "job.json", baseline_job("diffusion", {3, 20, 1}));
+  const Outcome r = run_worker((dir / "job.json").string() + " --start sideways -q", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--start"), std::string::npos) << r.output;
+}
+
 }  // namespace

@@ -116,6 +116,10 @@ TEST(StudyPlan, MemoryAndTimeFollowTheNamedModel) {
   EXPECT_DOUBLE_EQ(estimated_memory_bytes(c), kBytesPerCell * 3840 + kBaseBytes);
   EXPECT_DOUBLE_EQ(estimated_seconds(c, 1),
                    (kBaseIterations + kIterationsPerCellRoot * std::cbrt(3840.0)) * 3840 * kSecondsPerCellIteration);
+  // Grids the worker starts from a coarser solution cost a fixed number of
+  // fine-grid iterations' worth.
+  const std::array<int, 3> big{60, 400, 20};
+  EXPECT_DOUBLE_EQ(estimated_seconds(big, 2), kNestedIterations * 480000 * kSecondsPerCellIteration / 2);
   EXPECT_DOUBLE_EQ(plan.wall_seconds, plan.seconds / 2);
   EXPECT_FALSE(plan_to_table(plan).empty());
   EXPECT_EQ(plan_to_json(plan)["series"].size(), ex.series.size());

@@ -4,6 +4,7 @@
 // schemes (L1 norm: limiter clipping at extrema costs O(h) over a region of
 // width O(h)), 2 for the filter; pass = within 0.2 of expected or above.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include "verify/filter_order.h"
 #include "verify/manufactured_flow.h"
@@ -30,6 +31,28 @@ TEST(ManufacturedFlow, MusclIsSecondOrder) { expect_order(manufactured_flow_orde
 TEST(ManufacturedFlow, MinmodIsSecondOrder) { expect_order(manufactured_flow_order(Limiter::kMinmod, kGrids)); }
 
 TEST(ManufacturedFilter, FilterIsSecondOrder) { expect_order(filter_order({16, 32, 64})); }
+
+// run_code_verification solves the grids concurrently, one per thread: the
+// studies must come out the same, bit for bit, with 1 and 2 threads.
+TEST(CodeVerification, ResultsDoNotDependOnTheThreadCount) {
+  VerifyOptions options;
+  options.quick = true;
+  options.schemes = {Limiter::kFou};
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const auto one = run_code_verification(options);
+  omp_set_num_threads(2);
+  const auto two = run_code_verification(options);
+  omp_set_num_threads(saved);
+  ASSERT_EQ(one.size(), 2u);  // the FOU flow study and the filter study
+  ASSERT_EQ(two.size(), one.size());
+  for (std::size_t s = 0; s < one.size(); ++s) {
+    EXPECT_EQ(one[s].equation, two[s].equation);
+    EXPECT_EQ(one[s].grids, (std::vector<int>{16, 32, 64}));
+    EXPECT_EQ(one[s].errors, two[s].errors);
+    EXPECT_EQ(one[s].iterations, two[s].iterations);
+  }
+}
 
 TEST(ObservedOrder, ExactPowerLawGivesItsExponent) {
   // e = 3 h^1.5 on h = 1/4, 1/8: the formula must return 1.5 exactly.

@@ -59,7 +59,7 @@ void update_drag_faces(const FlowProblem& problem, FlowState& state) {
   for (int a = 0; a < 3; ++a) {
     face_average(problem.grid, a, state.drag.beta, zero_gradient, state.beta_face[a]);
     if (state.drag.beta_v[a].empty())
-      state.beta_v_face[a] = FaceField(problem.grid, a, 0.0);
+      state.beta_v_face[a] = FaceField();  // no particle velocities: no storage (24 B per cell)
     else
       face_average(problem.grid, a, state.drag.beta_v[a], zero_gradient, state.beta_v_face[a]);
   }

@@ -50,7 +50,7 @@ struct FlowState {
   // Face averages (mean of the two cells; ghosts per boundary.h):
   FaceVector eps_face;     // ε̄_g
   FaceVector beta_face;    // β̄
-  FaceVector beta_v_face;  // (βv̄)‾, zero when drag.beta_v is empty
+  FaceVector beta_v_face;  // (βv̄)‾; empty (= zero) when drag.beta_v is empty
 };
 
 // ε̄_g on every face (ghost ε_g per boundary.h).

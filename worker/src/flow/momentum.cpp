@@ -157,7 +157,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
       const double divR = divergence[g.index(xr[0], xr[1], xr[2])];
       b += mu / 3.0 * Aa * (divR - divL);
     }
-    b += V * state.beta_v_face[a][P];
+    if (!state.beta_v_face[a].values.empty()) b += V * state.beta_v_face[a][P];
     if (source) b += V * (*source)[P];
     const double ap = sum_nb + net_out + ap_fold + V * state.beta_face[a][P];
     sys.row_residual[P] = b + sum_nb_phi - ap * u[P];

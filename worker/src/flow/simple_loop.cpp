@@ -8,6 +8,7 @@
 #include <memory>
 #include <sstream>
 
+#include "flow/anderson.h"
 #include "flow/iterative_error.h"
 #include "flow/mass_flux.h"
 #include "flow/momentum.h"
@@ -26,15 +27,23 @@ std::string format_number(double x) {
   return s.str();
 }
 
+// The face grid of the component with the most faces.
+Grid largest_face_grid(const Grid& g) {
+  int best = 0;
+  for (int a = 1; a < 3; ++a)
+    if (FaceLayout(g, a).size() > FaceLayout(g, best).size()) best = a;
+  return FaceLayout(g, best).as_grid(g);
+}
+
 // Everything the loop allocates once.
 struct Workspace {
-  explicit Workspace(const Grid& g)
-      : pressure_eq(g),
-        momentum{MomentumSystem(FaceLayout(g, 0).as_grid(g)), MomentumSystem(FaceLayout(g, 1).as_grid(g)),
-                 MomentumSystem(FaceLayout(g, 2).as_grid(g))} {}
-  Stencil7 pressure_eq;
+  explicit Workspace(const Grid& g) : momentum(largest_face_grid(g)) {}
   SymmetricSolver pressure_solver;  // multigrid hierarchy kept across outer iterations
-  std::array<MomentumSystem, 3> momentum;
+  // One system for the three momentum components in turn (each is
+  // assembled and solved before the next), whose stencil then holds the
+  // pressure correction (assembled afresh each iteration): a quarter of the
+  // memory of four systems.
+  MomentumSystem momentum;
   std::vector<double> p_prime;
   FaceVector mass_flux;
   FaceVector d;  // SIMPLEC coefficients
@@ -69,6 +78,9 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
   double first_continuity = -1, first_momentum = -1;
   const LinearSolverSettings momentum_solver{settings.momentum_tolerance, settings.linear_max_iterations};
   const LinearSolverSettings pressure_solver{settings.pressure_tolerance, settings.linear_max_iterations};
+  std::unique_ptr<AndersonMixer> mixer;
+  std::vector<double> x_entering;
+  if (settings.anderson_depth > 0) mixer = std::make_unique<AndersonMixer>(settings.anderson_depth);
 
   for (int it = 1; it <= settings.max_iterations; ++it) {
     IterationReport report;
@@ -81,12 +93,14 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     update_drag_faces(problem, state);
     clock.charge(out.seconds.drag);
 
+    if (mixer) AndersonMixer::pack(state.u, state.p, x_entering);
     // 2. Momentum predictor: u* for each component with lagged mass fluxes.
     compute_mass_fluxes(problem, state, ws->mass_flux);
     const CellField divergence = velocity_divergence(g, state.u);
     double momentum_residual = 0, momentum_scale = 0;
     for (int a = 0; a < 3; ++a) {
-      MomentumSystem& sys = ws->momentum[a];
+      MomentumSystem& sys = ws->momentum;
+      reshape_stencil(sys.eq, FaceLayout(g, a).as_grid(g));
       assemble_momentum(problem, state, ws->mass_flux, divergence, a, settings.relax_u, sys, ws->d[a]);
       momentum_residual += sys.residual;
       momentum_scale += sys.scale;
@@ -102,10 +116,12 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     clock.charge(out.seconds.momentum);
 
     // 3. Pressure correction: p ← p + α_p p', u ← u* + d ∇p'.
+    reshape_stencil(ws->momentum.eq, g);
     const PressureCorrectionResult pc =
-        correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->pressure_eq,
+        correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->momentum.eq,
                        ws->pressure_solver, ws->p_prime);
     report.pressure_iterations = pc.solve.iterations;
+    if (mixer) mixer->mix(x_entering, state.u, state.p);
     if (!pc.solve.converged) out.linear_failures = true;
     clock.charge(out.seconds.pressure);
 

@@ -43,6 +43,9 @@ struct SimpleSettings {
   // (docs/SOLVER.md).
   int drag_interval = 4;
   double blowup = 1e6;
+  // Anderson acceleration depth of the outer iterations (flow/anderson.h);
+  // 0 = off (the default: see docs/DESIGN.md for what it measured).
+  int anderson_depth = 0;
 };
 
 struct IterationReport {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <spdlog/spdlog.h>
 
@@ -13,6 +14,7 @@
 #include "flow/initial_state.h"
 #include "flow/mass_flux.h"
 #include "flow/probes.h"
+#include "flow/prolong.h"
 #include "flow/vtk_writer.h"
 
 namespace gridfree {
@@ -34,6 +36,56 @@ double peak_rss_mb() {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// A converged solution on a coarser grid: the nested start of a finer one.
+struct CoarseSolution {
+  Grid grid;
+  CellField p;
+  FaceVector u;
+  nlohmann::json levels = nlohmann::json::array();  // what each coarser solve did, coarsest first
+};
+
+// The grid of the nested start: every axis with at least kMinAxisCells
+// cells halved (rounded), none when the fine grid has fewer than
+// `min_cells` cells (docs/SOLVER.md, "Nested start").
+constexpr int kMinAxisCells = 4;
+std::optional<std::array<int, 3>> coarser_cells(const std::array<int, 3>& n, std::size_t min_cells) {
+  const std::size_t cells = std::size_t(n[0]) * n[1] * n[2];
+  if (cells < min_cells) return std::nullopt;
+  std::array<int, 3> c = n;
+  for (int a = 0; a < 3; ++a)
+    if (n[a] >= kMinAxisCells) c[a] = (n[a] + 1) / 2;
+  return c;
+}
+
+JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const SolveOptions& options,
+                     CoarseSolution* keep);
+
+// Solves the job on the coarser grid (itself started the same way) and
+// returns its solution if it converged.
+std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet& particles,
+                                           const SolveOptions& options) {
+  const auto cells = coarser_cells(job.numerics.cells, options.nested_min_cells);
+  if (!cells) return std::nullopt;
+  JobSpec coarse = job;
+  coarse.numerics.cells = *cells;
+  SolveOptions quiet = options;
+  quiet.on_iteration = {};
+  quiet.vtk_dir.reset();
+  spdlog::info("nested start: solving on {}x{}x{} cells first", (*cells)[0], (*cells)[1], (*cells)[2]);
+  CoarseSolution sol;
+  const JobResult r = solve_grid(coarse, particles, quiet, &sol);
+  sol.levels.push_back({{"cells", *cells},
+                        {"status", solve_status_name(r.status)},
+                        {"iterations", r.iterations},
+                        {"wall_s", r.wall_s}});
+  if (r.status != SolveStatus::kConverged) {
+    spdlog::info("nested start: the coarse solve ended {}; starting from the analytic warm start",
+                 solve_status_name(r.status));
+    return std::nullopt;
+  }
+  return sol;
 }
 
 }  // namespace
@@ -60,6 +112,13 @@ Grid job_grid(const CaseSpec& case_spec, const std::array<int, 3>& cells) {
 
 JobResult solve_with_particles(const JobSpec& job, const ParticleSet& particles,
                                const SolveOptions& options) {
+  return solve_grid(job, particles, options, nullptr);
+}
+
+namespace {
+
+JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const SolveOptions& options,
+                     CoarseSolution* keep) {
   const auto t0 = Clock::now();
   const double cpu0 = cpu_seconds();
   const CaseSpec& cs = job.case_spec;
@@ -104,7 +163,10 @@ JobResult solve_with_particles(const JobSpec& job, const ParticleSet& particles,
     return result;
   }
 
-  // 4. Drag coupling, warm start and outer iterations.
+  // 4. Nested start (a solution on a coarser grid), drag coupling, warm
+  // start and outer iterations.
+  std::optional<CoarseSolution> coarse;
+  if (options.nested_start && !options.cold_start) coarse = nested_start(job, particles, options);
   const DragSettings drag_settings{num.drag, d, cs.gas.density_g_cm3, cs.gas.viscosity_g_cm_s};
   std::optional<ParticleDragField> particle_drag;
   if (!uniform) {
@@ -120,6 +182,12 @@ JobResult solve_with_particles(const JobSpec& job, const ParticleSet& particles,
   };
   FlowState state;
   warm_start(problem, sf.eps_s, drag, state, options.cold_start);
+  if (coarse) {
+    state.p = prolong_cells(coarse->grid, coarse->p, g);
+    state.u = prolong_faces(coarse->grid, coarse->u, g);
+    result.extra["nested_start"] = coarse->levels;
+    coarse.reset();
+  }
 
   const double u0 = inflow_velocity(problem.bc);
   const double y1 = cs.probes.y1_dp * d, y2 = cs.probes.y2_dp * d;
@@ -165,7 +233,14 @@ JobResult solve_with_particles(const JobSpec& job, const ParticleSet& particles,
     result.extra["vtk"] = file.filename().string();
   }
   finish(result);
+  if (keep) {
+    keep->grid = g;
+    keep->p = std::move(state.p);
+    keep->u = std::move(state.u);
+    if (result.extra.contains("nested_start")) keep->levels = result.extra["nested_start"];
+  }
   return result;
 }
 
+}  // namespace
 }  // namespace gridfree

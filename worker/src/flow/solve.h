@@ -22,6 +22,11 @@ struct SolveOptions {
   std::optional<std::filesystem::path> vtk_dir;  // write the final fields here
   SimpleSettings simple;                         // relaxation and inner tolerances
   bool cold_start = false;                       // u = 0, p = 0 instead of the warm start
+  // Start from the converged solution on a grid with half the cells per
+  // axis, itself started the same way (docs/SOLVER.md, "Nested start");
+  // off with cold_start.
+  bool nested_start = true;
+  std::size_t nested_min_cells = 20000;  // no nested start below this many cells
   // Called after every outer iteration (progress output).
   IterationCallback on_iteration;
 };

@@ -24,6 +24,11 @@ struct Stencil7 {
   std::vector<double> ap, aw, ae, as, an, ab, at, b;
 };
 
+// Puts `s` on grid `g`: every array resized to g.cells() (contents
+// unspecified; storage reused when it fits). One system can so serve
+// several grids in turn, e.g. the three staggered momentum components.
+void reshape_stencil(Stencil7& s, const Grid& g);
+
 // r = b + Σ a_nb φ_nb − a_P φ for every cell.
 void stencil_residual(const Stencil7& s, const std::vector<double>& phi, std::vector<double>& r);
 

@@ -45,6 +45,11 @@ void stencil_apply(const Stencil7& s, const std::vector<double>& phi, std::vecto
   }
 }
 
+void reshape_stencil(Stencil7& s, const Grid& g) {
+  s.grid = g;
+  for (std::vector<double>* v : {&s.ap, &s.aw, &s.ae, &s.as, &s.an, &s.ab, &s.at, &s.b}) v->resize(g.cells());
+}
+
 void stencil_residual(const Stencil7& s, const std::vector<double>& phi, std::vector<double>& r) {
   stencil_apply(s, phi, r);
   const std::size_t n = r.size();

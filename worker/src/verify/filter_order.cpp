@@ -1,7 +1,9 @@
 #include "verify/filter_order.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "deposition/filter.h"
 
@@ -19,43 +21,51 @@ double mode_factor(double kappa) {
 
 }  // namespace
 
-OrderStudy filter_order(const std::vector<int>& grids) {
+OrderStudy filter_order_study() {
   OrderStudy s;
   s.equation = "diffusion_filter";
   s.scheme = "backward_euler_3point";
   s.norm = "max cell value";
   s.expected_order = 2.0;
-  for (int n : grids) {
-    Grid g;
-    g.n = {n, n, 1};
-    g.length = {1.0, 1.0, 1.0 / n};
-    g.periodic = {true, true, true};
-    std::vector<double> alpha(g.cells());
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        alpha[g.index(i, j, 0)] = 1.0 + 0.5 * std::sin(kK * g.centre(0, i)) + std::cos(2 * kK * g.centre(1, j)) / 3.0;
-    FilterSettings settings;
-    settings.fwhm_cm = kFwhm;
-    settings.steps = kSteps;
-    settings.tolerance = 1e-14;
-    const FilterStats stats = apply_filter(g, settings, alpha);
-    s.grids.push_back(n);
-    s.h.push_back(1.0 / n);
-    if (!stats.converged) {
-      s.failure = "filter solve did not converge on " + std::to_string(n) + " cells";
-      s.errors.push_back(std::nan(""));
-      break;
-    }
-    double err = 0;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const double exact = 1.0 + 0.5 * std::sin(kK * g.centre(0, i)) * mode_factor(kK) +
-                             std::cos(2 * kK * g.centre(1, j)) / 3.0 * mode_factor(2 * kK);
-        err = std::max(err, std::abs(alpha[g.index(i, j, 0)] - exact));
-      }
-    s.errors.push_back(err);
+  return s;
+}
+
+GridOutcome filter_outcome(int n) {
+  Grid g;
+  g.n = {n, n, 1};
+  g.length = {1.0, 1.0, 1.0 / n};
+  g.periodic = {true, true, true};
+  std::vector<double> alpha(g.cells());
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      alpha[g.index(i, j, 0)] = 1.0 + 0.5 * std::sin(kK * g.centre(0, i)) + std::cos(2 * kK * g.centre(1, j)) / 3.0;
+  FilterSettings settings;
+  settings.fwhm_cm = kFwhm;
+  settings.steps = kSteps;
+  settings.tolerance = 1e-14;
+  const FilterStats stats = apply_filter(g, settings, alpha);
+  GridOutcome o;
+  if (!stats.converged) {
+    o.failure = "filter solve did not converge on " + std::to_string(n) + " cells";
+    return o;
   }
-  s.observed_order = observed_order(s.h, s.errors);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double exact = 1.0 + 0.5 * std::sin(kK * g.centre(0, i)) * mode_factor(kK) +
+                           std::cos(2 * kK * g.centre(1, j)) / 3.0 * mode_factor(2 * kK);
+      o.error = std::max(o.error, std::abs(alpha[g.index(i, j, 0)] - exact));
+    }
+  return o;
+}
+
+OrderStudy filter_order(const std::vector<int>& grids) {
+  OrderStudy s = filter_order_study();
+  std::vector<GridOutcome> outcomes;
+  for (int n : grids) {
+    outcomes.push_back(filter_outcome(n));
+    if (!outcomes.back().failure.empty()) break;
+  }
+  finish_study(s, grids, outcomes);
   return s;
 }
 

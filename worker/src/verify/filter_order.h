@@ -15,6 +15,11 @@
 
 namespace gridfree {
 
+// The study's description (equation, scheme, norm, expected order), no grids yet.
+OrderStudy filter_order_study();
+// One n×n×1 grid: the max-norm error, or why the filter solve failed.
+GridOutcome filter_outcome(int n);
+
 OrderStudy filter_order(const std::vector<int>& grids);
 
 }  // namespace gridfree

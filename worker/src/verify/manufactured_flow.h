@@ -21,6 +21,11 @@
 
 namespace gridfree {
 
+// The study's description (equation, scheme, norm, expected order), no grids yet.
+OrderStudy manufactured_flow_study(Limiter scheme);
+// One grid: the L1 velocity error, or why the solver did not converge.
+GridOutcome manufactured_flow_outcome(Limiter scheme, int n);
+
 // Solves the manufactured problem on n×n×1 grids for `scheme` and measures
 // the L1 error of the face velocities (mean |u_h − u| over all x- and y-faces).
 OrderStudy manufactured_flow_order(Limiter scheme, const std::vector<int>& grids);

@@ -18,11 +18,24 @@ struct OrderStudy {
   std::vector<int> grids;        // cells per direction of each grid, coarse to fine
   std::vector<double> h;         // cell sizes
   std::vector<double> errors;    // error on each grid
+  std::vector<int> iterations;   // solver iterations on each grid (0: not iterative)
   std::string failure;           // non-empty when a grid could not be solved
 
   // Observed order within 0.2 of the expected one, or above it.
   bool passed() const;
 };
+
+// What one grid of a study gave: its error, or why it could not be solved.
+struct GridOutcome {
+  double error = 0;
+  int iterations = 0;   // outer iterations of the solve (0: not iterative)
+  std::string failure;  // non-empty: no error on this grid
+};
+
+// Fills s.grids, s.h (= 1/n), s.errors and s.observed_order from the
+// outcomes of `grids` (same order). Stops at the first failed grid: its
+// error is NaN and its reason becomes s.failure.
+void finish_study(OrderStudy& s, const std::vector<int>& grids, const std::vector<GridOutcome>& outcomes);
 
 // Order from the two finest grids: ln(e_{n−2}/e_{n−1}) / ln(h_{n−2}/h_{n−1}).
 double observed_order(const std::vector<double>& h, const std::vector<double>& errors);
