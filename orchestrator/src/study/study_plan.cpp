@@ -1,7 +1,8 @@
 // Memory and time estimates of a study's jobs (see study_plan.h for the model).
 #include "study/study_plan.h"
 
-#include <unistd.h>
+#include "job/memory_estimate.h"
+
 
 #include <algorithm>
 #include <cmath>
@@ -10,20 +11,13 @@
 
 namespace gridfree {
 
-std::uint64_t physical_memory_bytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long page = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return 0;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page);
-}
+std::uint64_t physical_memory_bytes() { return machine_memory_bytes(); }
 
 static double cell_count(const std::array<int, 3>& c) {
   return static_cast<double>(c[0]) * c[1] * c[2];
 }
 
-double estimated_memory_bytes(const std::array<int, 3>& cells) {
-  return kBytesPerCell * cell_count(cells) + kBaseBytes;
-}
+double estimated_memory_bytes(const std::array<int, 3>& cells) { return job_memory_estimate_bytes(cells); }
 
 double estimated_iterations(const std::array<int, 3>& cells) {
   const double n = cell_count(cells);
@@ -89,7 +83,7 @@ nlohmann::json plan_to_json(const Plan& plan) {
           {"threads_per_worker", plan.threads_per_worker},
           {"wall_seconds", plan.wall_seconds},
           {"model",
-           {{"bytes_per_cell", kBytesPerCell},
+           {{"bytes_per_cell", kWorkerBytesPerCell},
             {"seconds_per_cell_iteration", kSecondsPerCellIteration},
             {"iterations", iterations_model_text()}}}};
 }
@@ -136,7 +130,7 @@ std::string plan_to_table(const Plan& plan) {
   std::snprintf(line, sizeof line,
                 "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell, %.1e s per "
                 "cell-iteration)\n",
-                plan.workers, plan.threads_per_worker, human_seconds(plan.wall_seconds).c_str(), kBytesPerCell,
+                plan.workers, plan.threads_per_worker, human_seconds(plan.wall_seconds).c_str(), kWorkerBytesPerCell,
                 kSecondsPerCellIteration);
   out += line;
   return out;

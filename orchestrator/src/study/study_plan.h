@@ -1,7 +1,7 @@
 // Resource estimates for planning and validation: memory and run time of a
 // job from its cell count. The constants are the one place to tune them.
 //
-//   memory(N) = kBytesPerCell · N + kBaseBytes
+//   memory(N) = kWorkerBytesPerCell · N + kWorkerBaseBytes (job/memory_estimate.h)
 //   time(N)   = kIterationsEstimate(N) · N · kSecondsPerCellIteration / threads
 //   iterations(N) ≈ kBaseIterations + kIterationsPerCellRoot · N^(1/3)
 //   (SIMPLE-type outer iterations grow roughly with the cells along a line)
@@ -19,16 +19,13 @@
 namespace gridfree {
 
 // Cost model, fitted to the bursting-bubble baseline (docs/BENCHMARKS.md).
-// solver/4, 2026-11-29: peak RSS 334 MB at 480 k cells → ≈ 730 B/cell
-// (kept at 750) plus a fixed part (the base below is kept generous).
+// Memory: the worker's own estimate (job/memory_estimate.h).
 // Grids below kNestedMinCells start from the analytic warm start: SIMPLEC
 // iterations 41, 65 at 1.6 k, 7.5 k cells ≈ 20 + 2.65·N^(1/3) (solver/3,
 // 2026-11-23; 1.7–1.8 µs of CPU per cell and iteration). Larger grids start
 // from the solution on a grid with half the cells per axis (docs/SOLVER.md):
 // the CPU time of the whole nested solve was 35 (60 k) and 30 (480 k)
 // fine-grid iterations' worth, so kNestedIterations is used for them.
-inline constexpr double kBytesPerCell = 750.0;
-inline constexpr double kBaseBytes = 64.0 * 1024 * 1024;  // executable, particles, buffers
 inline constexpr double kBaseIterations = 20.0;
 inline constexpr double kIterationsPerCellRoot = 2.65;
 inline constexpr double kNestedMinCells = 20000;           // the worker's nested-start threshold

@@ -8,6 +8,7 @@
 
 #include "job/job_hash.h"
 #include "study/study.h"
+#include "job/memory_estimate.h"
 #include "study/study_plan.h"
 
 namespace gridfree {
@@ -113,7 +114,7 @@ TEST(StudyPlan, MemoryAndTimeFollowTheNamedModel) {
   const Plan plan = make_plan(study, ex, 2, 2);
   EXPECT_EQ(plan.jobs, ex.jobs.size());
   const std::array<int, 3> c{12, 80, 4};
-  EXPECT_DOUBLE_EQ(estimated_memory_bytes(c), kBytesPerCell * 3840 + kBaseBytes);
+  EXPECT_DOUBLE_EQ(estimated_memory_bytes(c), kWorkerBytesPerCell * 3840 + kWorkerBaseBytes);
   EXPECT_DOUBLE_EQ(estimated_seconds(c, 1),
                    (kBaseIterations + kIterationsPerCellRoot * std::cbrt(3840.0)) * 3840 * kSecondsPerCellIteration);
   // Grids the worker starts from a coarser solution cost a fixed number of

@@ -4,9 +4,9 @@
 //
 //   memory(N) = kWorkerBytesPerCell · N + kWorkerBaseBytes
 //
-// The same model as the orchestrator's plan (850 bytes per cell measured as
-// peak RSS over cells on the benchmark grids, docs/BENCHMARKS.md, plus 64 MiB
-// for the executable, particles and buffers).
+// The orchestrator's plan uses the same model. solver/4, 2026-11-29: peak
+// RSS 334 MB at 480 k cells ≈ 730 B/cell, 651 B/cell at 3.84 M (kept at 750,
+// docs/BENCHMARKS.md), plus 64 MiB for the executable, particles and buffers.
 #pragma once
 
 #include <array>
@@ -17,7 +17,7 @@
 
 namespace gridfree {
 
-inline constexpr double kWorkerBytesPerCell = 850.0;
+inline constexpr double kWorkerBytesPerCell = 750.0;
 inline constexpr double kWorkerBaseBytes = 64.0 * 1024 * 1024;
 
 double job_memory_estimate_bytes(const std::array<int, 3>& cells);
