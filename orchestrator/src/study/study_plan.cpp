@@ -3,7 +3,6 @@
 
 #include "job/memory_estimate.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
