@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(
   g++ make cmake git pkg-config
   libeigen3-dev nlohmann-json3-dev libsqlite3-dev sqlite3 libspdlog-dev
-  libcli11-dev libgtest-dev libvalijson-dev
+  libcli11-dev libgtest-dev libvalijson-dev libfftw3-dev
 )
 # `install-deps.sh test` adds what only the tests need: headless Chromium
 # renders the HTML report once.
