@@ -31,9 +31,9 @@ enum class DepositionKind { kDiffusion, kCentroid };
 struct DepositionSpec {
   DepositionKind kind = DepositionKind::kDiffusion;
   double fwhm_dp = 6;
+  FilterDiffusivity diffusivity = FilterDiffusivity::kConsistent;
   PreDeposition pre_deposition = PreDeposition::kTrilinear;
   Sampling sampling = Sampling::kTrilinear;
-  FilterDiffusivity diffusivity = FilterDiffusivity::kConsistent;
   FilterIntegration integration = FilterIntegration::kExact;
   int steps = 8;                   // integration = steps only
   double truncation_sigmas = 4;    // pre_deposition = gaussian only
