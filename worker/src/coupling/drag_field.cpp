@@ -68,6 +68,14 @@ ParticleDragField::ParticleDragField(const Grid& grid, std::vector<Particle> par
     KernelParams k = transfer.kernel;
     k.kind = sampling_ == Sampling::kTrilinear ? PreDeposition::kTrilinear : PreDeposition::kGaussian;
     sample_ = k.kind == transfer.kernel.kind ? deposit_ : std::make_shared<TransferStencils>(grid_, particles_, k);
+    // ε_g is already the filtered field: it is interpolated trilinearly
+    // whatever the sampling kernel (the wide kernel would smooth it twice).
+    k.kind = PreDeposition::kTrilinear;
+    eps_sample_ = sample_ && sampling_ == Sampling::kTrilinear
+                      ? sample_
+                      : (transfer.kernel.kind == PreDeposition::kTrilinear
+                             ? deposit_
+                             : std::make_shared<TransferStencils>(grid_, particles_, k));
   }
   f_.resize(particles_.size());
   for (auto& fp : force_) fp.resize(particles_.size());
@@ -96,7 +104,7 @@ void ParticleDragField::compute(const std::vector<double>& eps_g, const std::arr
     std::array<double, 3> slip{};
     double eps = 0;
     if (sample_) {
-      eps = sample_->sample(i, eps_g);
+      eps = eps_sample_->sample(i, eps_g);
       for (int a = 0; a < 3; ++a) slip[a] = sample_->sample(i, (*u_seen)[a]) - velocity_of(p, a);
     } else {
       eps = eps_g[c];

@@ -7,8 +7,9 @@
 //             (none for centroid deposition or the gaussian kernel). The gas
 //             values at the particle (docs/TRANSFER.md):
 //               cell:      ε_g(p) = ε_g,c(p), u(p) = u_c(p), the particle's cell;
-//               trilinear/gaussian:  ε_g(p) = Σ_c S_p(c) ε_g,c,
-//                          u(p) = Σ_c S_p(c) F(u)_c  with S the sampling kernel.
+//               trilinear/gaussian:  ε_g(p) = Σ_c T_p(c) ε_g,c (T trilinear: ε_g is
+//                          already filtered), u(p) = Σ_c S_p(c) F(u)_c with S the
+//                          sampling kernel (trilinear or gaussian).
 //
 // Interphase force balance. The force on the particles is
 //   F_p = Σ_p f_p (u(p) − v_p);
@@ -93,7 +94,8 @@ class ParticleDragField {
   std::vector<double> f_;          // f_p per particle
   Sampling sampling_ = Sampling::kCell;
   std::shared_ptr<const TransferStencils> deposit_;  // null: centroid (cell_)
-  std::shared_ptr<const TransferStencils> sample_;   // null: cell values
+  std::shared_ptr<const TransferStencils> sample_;   // null: cell values; u(p)
+  std::shared_ptr<const TransferStencils> eps_sample_;  // trilinear, ε_g(p) (when sample_)
   std::array<std::vector<double>, 3> u_sampled_;     // F(u_c) when sampling through the filter
   std::array<std::vector<double>, 3> force_;         // f_p (u(p) − v_p) per particle
   double last_imbalance_ = 0;
