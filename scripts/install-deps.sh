@@ -9,7 +9,7 @@ set -euo pipefail
 packages=(
   g++ make cmake git pkg-config
   libeigen3-dev nlohmann-json3-dev libsqlite3-dev sqlite3 libspdlog-dev
-  libcli11-dev libgtest-dev
+  libcli11-dev libgtest-dev libfftw3-dev
   librsvg2-bin
 )
 # librsvg2-bin: rsvg-convert writes the PDF/PNG copies of the report's charts.

@@ -9,5 +9,6 @@ namespace gridfree::worker_cli {
 void add_solve_command(CLI::App& app, int& exit_code);
 void add_particles_command(CLI::App& app, int& exit_code);
 void add_verify_command(CLI::App& app, int& exit_code);
+void add_align_command(CLI::App& app, int& exit_code);
 
 }  // namespace gridfree::worker_cli

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   worker_cli::add_solve_command(app, exit_code);
   worker_cli::add_particles_command(app, exit_code);
   worker_cli::add_verify_command(app, exit_code);
+  worker_cli::add_align_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

@@ -26,7 +26,7 @@ struct SeriesKey {
   std::string convection = "superbee";
   double fwhm_dp = 6;
   std::string drag = "bvk";
-  std::string deposition = "diffusion";  // "diffusion" | "centroid"
+  std::string deposition = "diffusion";  // "diffusion" | "centroid" | a transfer preset "fm18" | "mfix"
 
   auto operator<=>(const SeriesKey&) const = default;
   std::string label() const;  // "PC1 superbee fwhm6 bvk" (+ " centroid")

@@ -76,7 +76,13 @@ nlohmann::json make_job_document(const Study& s, const SeriesKey& key, const std
   numerics["drag"] = key.drag;
   nlohmann::json dep = numerics.contains("deposition") && numerics["deposition"].is_object()
                            ? numerics["deposition"] : nlohmann::json::object();
-  dep["kind"] = key.deposition;
+  if (key.deposition == "fm18" || key.deposition == "mfix") {
+    dep = {{"preset", key.deposition}};  // a preset fixes every transfer field (docs/TRANSFER.md)
+  } else if (key.deposition == "centroid") {
+    dep = {{"kind", "centroid"}};  // no filter, cell values: the transfer fields do not apply
+  } else {
+    dep["kind"] = key.deposition;
+  }
   dep["fwhm_dp"] = key.fwhm_dp;
   numerics["deposition"] = dep;
   return {{"schema", "gridfree/job/1"},

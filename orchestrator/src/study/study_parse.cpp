@@ -126,7 +126,10 @@ void check_names(const std::vector<std::string>& levels, const std::string& at, 
 
 bool known_convection(const std::string& n) { return limiter_from_name(n).has_value(); }
 bool known_drag(const std::string& n) { return drag_law_from_name(n).has_value(); }
-bool known_deposition(const std::string& n) { return n == "diffusion" || n == "centroid"; }
+// "fm18" and "mfix" are transfer presets (docs/TRANSFER.md): diffusion deposition with the preset's fields.
+bool known_deposition(const std::string& n) {
+  return n == "diffusion" || n == "centroid" || n == "fm18" || n == "mfix";
+}
 
 void parse_factors(const json& doc, Study& s, ProblemList& problems) {
   auto f = doc.find("factors");
@@ -145,7 +148,7 @@ void parse_factors(const json& doc, Study& s, ProblemList& problems) {
       check_names(s.factors.drag, at, problems, known_drag, drag_law_names());
     } else if (it.key() == "deposition") {
       s.factors.deposition = string_levels(*it, at, problems);
-      check_names(s.factors.deposition, at, problems, known_deposition, "diffusion, centroid");
+      check_names(s.factors.deposition, at, problems, known_deposition, "diffusion, centroid, fm18, mfix");
     } else if (it.key() == "fwhm_dp") {
       if (!it->is_array()) {
         add_once(problems, at, "must be an array of numbers");

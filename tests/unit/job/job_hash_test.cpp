@@ -4,6 +4,7 @@
 
 #include "core/version.h"
 #include "job/job_hash.h"
+#include "job/job_spec.h"
 
 namespace gridfree {
 namespace {
@@ -59,8 +60,32 @@ TEST(JobHashDefinition, AnyValueChangeChangesTheHash) {
 }
 
 TEST(JobHashDefinition, IsShaOfCanonicalTextAndSolverVersion) {
-  const json j = example_job();
-  EXPECT_EQ(job_hash(j), sha256_hex(canonical_json(j) + "\n" + kSolverVersion));
+  // numerics.deposition is hashed expanded (presets and defaults written out).
+  json j = example_job();
+  ProblemList problems;
+  const DepositionSpec d = parse_deposition(j["numerics"]["deposition"], "/numerics/deposition", problems);
+  ASSERT_TRUE(problems.empty());
+  const json given = j["numerics"]["deposition"];
+  j["numerics"]["deposition"] = deposition_json(d, given);
+  EXPECT_EQ(job_hash(example_job()), sha256_hex(canonical_json(j) + "\n" + kSolverVersion));
+}
+
+TEST(JobHashDefinition, APresetAndItsExplicitSpellingAreOneJob) {
+  json preset = example_job(), explicit_ = example_job(), other = example_job();
+  preset["numerics"]["deposition"] = {{"preset", "fm18"}, {"fwhm_dp", 6}};
+  explicit_["numerics"]["deposition"] = {{"kind", "diffusion"},     {"fwhm_dp", 6},   {"pre_deposition", "centroid"},
+                                         {"sampling", "cell"},      {"diffusivity", "seed"},
+                                         {"integration", "steps"},  {"steps", 8}};
+  other["numerics"]["deposition"] = {{"preset", "mfix"}, {"fwhm_dp", 6}};
+  EXPECT_EQ(job_hash(preset), job_hash(explicit_));
+  EXPECT_NE(job_hash(preset), job_hash(other));
+  // An omitted default and the default given are one job too.
+  json defaults = example_job(), spelled = example_job();
+  defaults["numerics"]["deposition"] = {{"kind", "diffusion"}, {"fwhm_dp", 6}};
+  spelled["numerics"]["deposition"] = {{"kind", "diffusion"},   {"fwhm_dp", 6},          {"pre_deposition", "trilinear"},
+                                       {"sampling", "trilinear"}, {"diffusivity", "consistent"}, {"integration", "exact"}};
+  EXPECT_EQ(job_hash(defaults), job_hash(spelled));
+  EXPECT_NE(job_hash(defaults), job_hash(preset));
 }
 
 }  // namespace

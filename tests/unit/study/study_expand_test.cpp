@@ -128,3 +128,31 @@ TEST(StudyPlan, MemoryAndTimeFollowTheNamedModel) {
 
 }  // namespace
 }  // namespace gridfree
+
+namespace gridfree {
+namespace {
+
+// A transfer preset is a level of the deposition factor: its jobs carry the
+// preset (the worker expands and hashes it), its series name shows it.
+TEST(StudyExpand, TransferPresetIsADepositionLevel) {
+  auto doc = base_study();
+  doc["factors"]["deposition"] = {"diffusion", "fm18"};
+  doc["design"] = "factorial";
+  const auto ex = expand(study_of(doc));
+  ASSERT_EQ(ex.series.size(), 2u * 3u * 2u * 2u * 2u);  // cases × convection × fwhm × drag × deposition
+  bool seen = false;
+  for (const auto& j : ex.jobs) {
+    const auto& dep = j.doc["numerics"]["deposition"];
+    if (!dep.contains("preset")) continue;
+    seen = true;
+    EXPECT_EQ(dep["preset"], "fm18");
+    EXPECT_EQ(dep.size(), 2u);  // preset and fwhm_dp only: the preset fixes the rest
+  }
+  EXPECT_TRUE(seen);
+  bool labelled = false;
+  for (const auto& k : ex.series) labelled = labelled || k.label().find("fm18") != std::string::npos;
+  EXPECT_TRUE(labelled);
+}
+
+}  // namespace
+}  // namespace gridfree

@@ -42,7 +42,7 @@ JobSpec baseline(double delta_star) {
   job.numerics.cells = cells_for_delta_star(c.domain_dp, delta_star);
   job.numerics.convection = Limiter::kSuperbee;
   job.numerics.drag = DragLaw::kBvk;
-  job.numerics.deposition = {DepositionKind::kDiffusion, 6, FilterDiffusivity::kSeed};
+  job.numerics.deposition = DepositionSpec{};  // the default transfer, fwhm 6 (docs/TRANSFER.md)
   job.numerics.tolerances.steady = 1e-5;
   job.numerics.max_iterations = 2000;
   return job;

@@ -1,7 +1,9 @@
 // ε_s from particles: centroid deposition, optional Gaussian filter (see header).
 #include "coupling/solids_fraction.h"
 
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "deposition/centroid.h"
 
@@ -24,16 +26,39 @@ FilterSettings filter_settings(const DepositionSpec& deposition, double d, doubl
   FilterSettings s;
   s.fwhm_cm = deposition.fwhm_dp * d;
   s.diffusivity = deposition.diffusivity;
+  s.kernel_variance_per_h2 = kernel_variance_per_h2(deposition.pre_deposition);
+  s.integration = deposition.integration;
+  s.steps = deposition.steps;
   s.tolerance = tolerance;
   return s;
+}
+
+KernelParams kernel_params(const DepositionSpec& deposition, double d) {
+  KernelParams k;
+  k.kind = deposition.kind == DepositionKind::kCentroid ? PreDeposition::kCentroid : deposition.pre_deposition;
+  k.sigma = deposition.fwhm_dp * d / std::sqrt(8.0 * std::numbers::ln2);
+  k.truncation_sigmas = deposition.truncation_sigmas;
+  return k;
+}
+
+bool is_filtered(const DepositionSpec& deposition) {
+  return deposition.kind == DepositionKind::kDiffusion && deposition.pre_deposition != PreDeposition::kGaussian;
 }
 
 SolidsFraction deposit_solids_fraction(const Grid& grid, const std::vector<Particle>& particles,
                                        const DepositionSpec& deposition, double d,
                                        double filter_tolerance) {
   SolidsFraction sf;
-  sf.eps_s = solids_fraction_centroid(grid, particles);
-  if (deposition.kind == DepositionKind::kDiffusion) {
+  const KernelParams kernel = kernel_params(deposition, d);
+  if (kernel.kind == PreDeposition::kCentroid) {
+    sf.eps_s = solids_fraction_centroid(grid, particles);
+  } else {
+    std::vector<double> volume(particles.size());
+    for (std::size_t p = 0; p < particles.size(); ++p)
+      volume[p] = std::numbers::pi / 6.0 * particles[p].d * particles[p].d * particles[p].d;
+    TransferStencils(grid, particles, kernel).deposit(volume, sf.eps_s);
+  }
+  if (is_filtered(deposition)) {
     sf.filter = apply_filter(grid, filter_settings(deposition, d, filter_tolerance), sf.eps_s);
     sf.filtered = true;
   }

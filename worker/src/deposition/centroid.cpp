@@ -15,9 +15,7 @@
 #include <numbers>
 
 namespace gridfree {
-namespace {
-
-int cell_along(const Grid& grid, int axis, double x) {
+int centroid_cell_along(const Grid& grid, int axis, double x) {
   const int n = grid.n[axis];
   const double length = grid.length[axis];
   const double h = grid.h(axis);
@@ -35,10 +33,9 @@ int cell_along(const Grid& grid, int axis, double x) {
   return c;
 }
 
-}  // namespace
-
 std::size_t cell_of_particle(const Grid& grid, const Particle& p) {
-  return grid.index(cell_along(grid, 0, p.x), cell_along(grid, 1, p.y), cell_along(grid, 2, p.z));
+  return grid.index(centroid_cell_along(grid, 0, p.x), centroid_cell_along(grid, 1, p.y),
+                     centroid_cell_along(grid, 2, p.z));
 }
 
 std::vector<double> deposit_centroid(const Grid& grid, const std::vector<Particle>& particles,

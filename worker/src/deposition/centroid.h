@@ -11,6 +11,9 @@
 
 namespace gridfree {
 
+// Cell along one axis holding coordinate x (rules in centroid.cpp).
+int centroid_cell_along(const Grid& grid, int axis, double x);
+
 // Cell index (Grid::index) holding the particle's centre.
 std::size_t cell_of_particle(const Grid& grid, const Particle& p);
 

@@ -1,7 +1,8 @@
 // The grid-independent Gaussian filter (PHYSICS.md §3.2):
 //
 //   ∂α/∂τ = Σ_i ν_i ∂²α/∂x_i²,  τ ∈ [0, 1],
-//   "seed": ν_i = max(δ_f² − Δ_i², 0) / (16 ln 2),   "mfix": ν_i = δ_f² / (8 √(2 ln 2)).
+//   "seed": ν_i = max(δ_f² − Δ_i², 0) / (16 ln 2),   "mfix": ν_i = δ_f² / (8 √(2 ln 2)),
+//   "consistent": ν_i = max(δ_f²/(8 ln 2) − c Δ_i², 0) / 2  (c: the pre-deposition kernel's variance per Δ_i²).
 //
 // A Gaussian of FWHM δ has variance δ²/(8 ln 2) and diffusion for unit time
 // adds 2ν, hence 16 ln 2; −Δ_i² discounts the cell's own smearing.
@@ -14,7 +15,8 @@
 // Each step is solved by linalg's multigrid-preconditioned conjugate
 // gradients; Σ α V is conserved to round-off (filter_system.h). Axes with
 // ν_i = 0 or one cell are skipped; when none is left the field is returned
-// untouched.
+// untouched. Exact integration (FilterIntegration::kExact) replaces the steps
+// by the transform solution of spectral_filter.h.
 #include "deposition/filter.h"
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include <spdlog/spdlog.h>
 
 #include "deposition/filter_system.h"
+#include "deposition/spectral_filter.h"
 #include "linalg/symmetric_solver.h"
 
 namespace gridfree {
@@ -42,6 +45,9 @@ std::array<double, 3> filter_diffusivity(const Grid& grid, const FilterSettings&
       case FilterDiffusivity::kMfix:
         nu[axis] = fwhm2 / (8.0 * std::sqrt(2.0 * ln2));
         break;
+      case FilterDiffusivity::kConsistent:
+        nu[axis] = std::max(fwhm2 / (8.0 * ln2) - s.kernel_variance_per_h2 * grid.h(axis) * grid.h(axis), 0.0) / 2.0;
+        break;
     }
   }
   return nu;
@@ -52,6 +58,10 @@ struct DiffusionFilter::Impl {
       : s(settings), nu(filter_diffusivity(g, settings)), steps(std::max(1, settings.steps)) {
     for (int axis = 0; axis < 3; ++axis) active = active || (nu[axis] > 0 && g.n[axis] > 1);
     if (!active) return;  // nothing diffuses: Δ_i ≥ δ_f (or a single cell) on every axis
+    if (settings.integration == FilterIntegration::kExact) {
+      spectral = std::make_unique<SpectralFilter>(g, nu);
+      return;
+    }
     system.emplace(filter_detail::assemble_filter_step(g, nu, 1.0 / steps));
     // The matrix is the same for every step and every field: set the solver
     // (and its multigrid hierarchy) up once; only the right-hand side changes.
@@ -62,7 +72,8 @@ struct DiffusionFilter::Impl {
   std::array<double, 3> nu;
   int steps;
   bool active = false;
-  std::optional<Stencil7> system;  // only when active
+  std::optional<Stencil7> system;  // only when active, backward-Euler steps
+  std::unique_ptr<SpectralFilter> spectral;  // only when active, exact integration
   SymmetricSolver solver;
 };
 
@@ -86,6 +97,10 @@ FilterStats DiffusionFilter::apply_steps(std::vector<double>& field, FilterWarmS
   FilterStats stats;
   stats.nu = m.nu;
   if (!m.active) return stats;
+  if (m.spectral) {
+    m.spectral->apply(field);
+    return stats;
+  }
   const LinearSolverSettings linear{m.s.tolerance, m.s.max_iterations};
   const bool warm_ok =
       warm && warm->steps.size() == std::size_t(m.steps) && warm->steps.front().size() == field.size();

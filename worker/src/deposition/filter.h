@@ -1,8 +1,11 @@
 // The grid-independent Gaussian filter (PHYSICS.md §3.2): implicit diffusion
 //   ∂α/∂τ = ν_i ∂²α/∂x_i²,  τ ∈ [0, 1],
-// with ν_i = max(δ_f² − Δ_i², 0)/(16 ln 2) ("seed") or δ_f²/(8√(2 ln 2))
+// with ν_i = max(δ_f² − Δ_i², 0)/(16 ln 2) ("seed", the paper's),
+// max(σ² − c Δ_i², 0)/2 with σ² = δ_f²/(8 ln 2) and c the variance the
+// pre-deposition kernel adds per Δ_i² ("consistent"), or δ_f²/(8√(2 ln 2))
 // ("mfix"), zero flux at non-periodic boundaries, wrap on periodic ones.
-// Backward Euler in `steps` equal pseudo-time steps; conserves Σ α V.
+// Backward Euler in `steps` equal pseudo-time steps, or solved exactly in
+// pseudo-time by transforms (spectral_filter.h); conserves Σ α V.
 #pragma once
 
 #include <array>
@@ -14,11 +17,16 @@
 
 namespace gridfree {
 
-enum class FilterDiffusivity { kSeed, kMfix };
+enum class FilterDiffusivity { kSeed, kMfix, kConsistent };
+enum class FilterIntegration { kSteps, kExact };
 
 struct FilterSettings {
   double fwhm_cm = 0;                       // δ_f, cm
   FilterDiffusivity diffusivity = FilterDiffusivity::kSeed;
+  // "consistent" only: the variance the pre-deposition kernel adds per Δ_i²
+  // (1/12 centroid, 1/6 trilinear; deposition/transfer_stencils.h).
+  double kernel_variance_per_h2 = 1.0 / 12.0;
+  FilterIntegration integration = FilterIntegration::kSteps;
   // Backward-Euler steps over τ ∈ [0,1]. The variance is exact for any count,
   // but the kernel shape is not: one step's kernel is the modified-Helmholtz
   // Green's function (∝ e^{−r/ℓ}/r in 3-D, singular at the particle), so the
@@ -33,7 +41,7 @@ struct FilterSettings {
 };
 
 struct FilterStats {
-  int steps = 0;
+  int steps = 0;                   // backward-Euler steps taken (0 for exact integration)
   int total_iterations = 0;        // summed over steps
   double worst_final_residual = 0; // largest final relative residual of any step
   bool converged = true;           // every step's linear solve converged

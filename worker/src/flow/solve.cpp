@@ -170,10 +170,9 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
   const DragSettings drag_settings{num.drag, d, cs.gas.density_g_cm3, cs.gas.viscosity_g_cm_s};
   std::optional<ParticleDragField> particle_drag;
   if (!uniform) {
-    std::optional<FilterSettings> filter;
-    if (num.deposition.kind == DepositionKind::kDiffusion)
-      filter = filter_settings(num.deposition, d, num.tolerances.filter);
-    particle_drag.emplace(g, particles.particles, drag_settings, filter);
+    TransferSettings transfer{kernel_params(num.deposition, d), num.deposition.sampling, std::nullopt};
+    if (is_filtered(num.deposition)) transfer.filter = filter_settings(num.deposition, d, num.tolerances.filter);
+    particle_drag.emplace(g, particles.particles, drag_settings, transfer);
   }
   const DragUpdate drag = [&](const FlowState& st, DragField& out) {
     const auto u_cell = cell_centre_velocity(g, st.u);
@@ -225,7 +224,10 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
                               {"pressure_tolerance", settings.pressure_tolerance},
                               {"drag_interval", settings.drag_interval}};
   if (out.linear_failures) result.extra["linear_solver_warnings"] = true;
-  if (particle_drag) result.extra["drag_updates"] = particle_drag->updates();
+  if (particle_drag) {
+    result.extra["drag_updates"] = particle_drag->updates();
+    result.extra["interphase_force_imbalance"] = particle_drag->last_imbalance();  // coupling/drag_field.h
+  }
 
   if (options.vtk_dir) {
     const auto file = *options.vtk_dir / (cs.name.empty() ? std::string("fields.vtk") : cs.name + ".vtk");

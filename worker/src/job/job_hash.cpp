@@ -11,6 +11,7 @@
 
 #include "core/version.h"
 #include "job/job_hash.h"
+#include "job/job_spec.h"
 
 namespace gridfree {
 namespace {
@@ -70,6 +71,21 @@ std::string canonical_json(const nlohmann::json& j) {
 }
 
 std::string job_hash(const nlohmann::json& job_doc) {
+  // A preset and its explicit spelling (and an omitted default and the
+  // default given) are one job: hash the expanded numerics.deposition.
+  const nlohmann::json* dep = nullptr;
+  if (job_doc.is_object() && job_doc.contains("numerics") && job_doc["numerics"].is_object() &&
+      job_doc["numerics"].contains("deposition"))
+    dep = &job_doc["numerics"]["deposition"];
+  if (dep && dep->is_object()) {
+    ProblemList problems;
+    const DepositionSpec spec = parse_deposition(*dep, "/numerics/deposition", problems);
+    if (problems.empty()) {
+      nlohmann::json expanded = job_doc;
+      expanded["numerics"]["deposition"] = deposition_json(spec, *dep);
+      return sha256_hex(canonical_json(expanded) + "\n" + kSolverVersion);
+    }
+  }
   return sha256_hex(canonical_json(job_doc) + "\n" + kSolverVersion);
 }
 

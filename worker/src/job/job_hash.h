@@ -2,6 +2,8 @@
 //
 // Canonical JSON: object keys sorted, no whitespace, every number written as
 // a double in shortest round-trip form (so 20 and 20.0 hash alike).
+// numerics.deposition is hashed expanded (presets and defaults written out,
+// job/deposition_parse.cpp), so a preset and its explicit spelling are one job.
 #pragma once
 
 #include <string>

@@ -15,7 +15,12 @@ std::string_view deposition_kind_name(DepositionKind kind) {
 }
 
 std::string_view filter_diffusivity_name(FilterDiffusivity d) {
-  return d == FilterDiffusivity::kSeed ? "seed" : "mfix";
+  switch (d) {
+    case FilterDiffusivity::kSeed: return "seed";
+    case FilterDiffusivity::kMfix: return "mfix";
+    case FilterDiffusivity::kConsistent: return "consistent";
+  }
+  return "?";
 }
 
 NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, const std::array<double, 3>& domain_dp,
@@ -65,21 +70,7 @@ NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, co
   else if (!drag.empty()) problems.add(child_pointer(path, "drag"), "'" + drag + "' is not one of " + drag_law_names());
 
   const std::string dep_at = child_pointer(path, "deposition");
-  const auto& dep = read_object(j, "deposition", path, problems, true);
-  const std::string kind = read_string(dep, "kind", dep_at, problems);
-  if (kind == "diffusion") n.deposition.kind = DepositionKind::kDiffusion;
-  else if (kind == "centroid") n.deposition.kind = DepositionKind::kCentroid;
-  else if (!kind.empty()) problems.add(child_pointer(dep_at, "kind"), "'" + kind + "' is not one of diffusion, centroid");
-  if (n.deposition.kind == DepositionKind::kDiffusion) {
-    n.deposition.fwhm_dp = read_number(dep, "fwhm_dp", dep_at, problems);
-    if (!(n.deposition.fwhm_dp > 0)) problems.add(child_pointer(dep_at, "fwhm_dp"), "the filter width must be > 0");
-  } else {
-    n.deposition.fwhm_dp = read_number(dep, "fwhm_dp", dep_at, problems, 0.0);
-  }
-  const std::string diffusivity = read_string(dep, "diffusivity", dep_at, problems, "seed");
-  if (diffusivity == "seed") n.deposition.diffusivity = FilterDiffusivity::kSeed;
-  else if (diffusivity == "mfix") n.deposition.diffusivity = FilterDiffusivity::kMfix;
-  else problems.add(child_pointer(dep_at, "diffusivity"), "'" + diffusivity + "' is not one of seed, mfix");
+  n.deposition = parse_deposition(read_object(j, "deposition", path, problems, true), dep_at, problems);
 
   const std::string tol_at = child_pointer(path, "tolerances");
   const auto& tol = read_object(j, "tolerances", path, problems);
@@ -107,6 +98,8 @@ JobSpec parse_job(const nlohmann::json& doc, const std::filesystem::path& base_d
   job.numerics = parse_numerics(doc.at("numerics"), "/numerics", job.case_spec.domain_dp, problems);
   problems.throw_if_any();
   job.source = doc;
+  // Record (and hash) the expanded transfer: a preset and its explicit spelling are one job.
+  job.source["numerics"]["deposition"] = deposition_json(job.numerics.deposition, doc["numerics"]["deposition"]);
   return job;
 }
 

@@ -17,6 +17,7 @@
 #include "core/case_spec.h"
 #include "core/input_error.h"
 #include "deposition/filter.h"
+#include "deposition/transfer_stencils.h"
 #include "drag/drag_law.h"
 #include "schemes/limiter.h"
 
@@ -24,10 +25,18 @@ namespace gridfree {
 
 enum class DepositionKind { kDiffusion, kCentroid };
 
+// numerics.deposition (docs/TRANSFER.md): how particle data reach the grid
+// and grid data reach the particles. The defaults are the measured default
+// transfer; the presets of job/deposition_parse.h expand to explicit values.
 struct DepositionSpec {
   DepositionKind kind = DepositionKind::kDiffusion;
   double fwhm_dp = 6;
-  FilterDiffusivity diffusivity = FilterDiffusivity::kSeed;
+  FilterDiffusivity diffusivity = FilterDiffusivity::kConsistent;
+  PreDeposition pre_deposition = PreDeposition::kTrilinear;
+  Sampling sampling = Sampling::kTrilinear;
+  FilterIntegration integration = FilterIntegration::kExact;
+  int steps = 8;                   // integration = steps only
+  double truncation_sigmas = 4;    // pre_deposition = gaussian only
 };
 
 struct TolerancesSpec {
@@ -77,5 +86,11 @@ nlohmann::json read_json_file(const std::filesystem::path& file);
 // Name <-> enum of the deposition settings ("diffusion", "seed", ...).
 std::string_view deposition_kind_name(DepositionKind kind);
 std::string_view filter_diffusivity_name(FilterDiffusivity d);
+
+// numerics.deposition (job/deposition_parse.cpp): presets expanded, defaults
+// filled in, contradictory combinations reported with their JSON pointer.
+DepositionSpec parse_deposition(const nlohmann::json& dep, const std::string& path, ProblemList& problems);
+// The explicit (expanded) JSON of a deposition: what a job records and hashes.
+nlohmann::json deposition_json(const DepositionSpec& dep, const nlohmann::json& given);
 
 }  // namespace gridfree
