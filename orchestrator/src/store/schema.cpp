@@ -1,4 +1,5 @@
-// Schema version 2 (step 1: the tables; step 2: nominal Δ*, v_series). Status words (docs/INTERFACE.md §5):
+// Schema version 4 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
+// state; 4: series verdicts). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
