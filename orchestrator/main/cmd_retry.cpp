@@ -5,7 +5,6 @@
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
-#include "core/input_error.h"
 
 namespace gridfree::cli {
 
@@ -17,9 +16,7 @@ void add_retry_command(CLI::App& app, int& exit_code) {
   sub->add_option("--db", *db, "SQLite database")->capture_default_str();
   sub->callback([=, &exit_code] {
     auto store = open_existing_store(*db);
-    const auto id = store->study_id(*name);
-    if (!id) throw InputError("STUDY", "no study named '" + *name + "' in " + store->file().string());
-    const int n = store->retry_failed(*id);
+    const int n = store->retry_failed(require_study(*store, *name));
     std::cout << "requeued " << n << " failed job(s) of " << *name
               << (n > 0 ? " (gridfree run or a daemon works them)" : "") << '\n';
     exit_code = to_int(ExitCode::kOk);

@@ -11,12 +11,6 @@
 namespace gridfree::cli {
 namespace {
 
-long long require_study(Store& store, const std::string& name) {
-  auto id = store.study_id(name);
-  if (!id) throw InputError("STUDY", "no study named '" + name + "' in " + store.file().string());
-  return *id;
-}
-
 nlohmann::json status_json(const StudyStatus& s) {
   return {{"name", s.name},          {"status", s.status},       {"submitted_at", s.submitted_at},
           {"finished_at", s.finished_at}, {"design", s.design},  {"jobs", s.jobs},

@@ -47,6 +47,12 @@ std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db) {
   return std::make_unique<Store>(db, false);
 }
 
+long long require_study(Store& store, const std::string& name) {
+  const auto id = store.study_id(name);
+  if (!id) throw InputError("STUDY", "no study named '" + name + "' in " + store.file().string());
+  return *id;
+}
+
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,
                                    const std::filesystem::path& out_override) {
   if (jobs < 1) throw InputError("-j", "needs at least 1 job at a time");

@@ -37,6 +37,9 @@ int default_jobs();  // number of cores
 // Opens an existing database (throws InputError naming --db if missing).
 std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db);
 
+// The id of the stored study `name` (throws InputError naming STUDY if there is none).
+long long require_study(Store& store, const std::string& name);
+
 // --timeout value meaning "derived from the cost model" (sched/job_timeout.h).
 inline constexpr double kDerivedTimeout = -1;
 
