@@ -14,6 +14,7 @@
 # --offsets     n_y offsets (default 0..7: the surface moves 28·7/200 ≈ 1 cell)
 # --out         keep the align JSON of each grid here (default: a temporary folder)
 set -euo pipefail
+source "$(dirname "$0")/bubble_job.sh"
 if [[ $# -lt 1 ]]; then
   echo "usage: $0 BIN_DIR [--deposition JSON] [--grids LIST] [--offsets LIST] [--threads N] [--out DIR]" >&2
   exit 2
@@ -41,33 +42,13 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 [[ -n "$out" ]] && mkdir -p "$out" || out="$work"
 
-echo "machine: $(nproc) cores, $(uname -m), $(date -u +%Y-%m-%dT%H:%MZ), load $(cut -d' ' -f1-3 /proc/loadavg)"
+machine_line
 echo "deposition: $deposition   n_y offsets: $offsets"
 printf '%-12s %8s %s\n' base delta_star "spread  dp* per variant"
 for g in $grids; do
   IFS=, read -r nx ny nz <<<"$g"
   job="$work/job_${nx}_${ny}_${nz}.json"
-  cat >"$job" <<JSON
-{
-  "schema": "gridfree/job/1",
-  "case": {
-    "name": "PC1", "domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
-    "gas": {"density_g_cm3": 1e-3, "viscosity_g_cm_s": 2e-4},
-    "gravity_cm_s2": [0, 0, 0],
-    "boundaries": {"x": "periodic", "z": "periodic",
-      "y_low": {"type": "mass_inflow", "superficial_velocity_cm_s": 20.0},
-      "y_high": {"type": "pressure_outflow", "pressure_dyn_cm2": 0.0}},
-    "particles": {"generator": {"kind": "bursting_bubble", "seed": 1}},
-    "probes": {"pressure_drop": {"y1_dp": 4, "y2_dp": 104}}
-  },
-  "numerics": {
-    "grid": {"cells": [$nx, $ny, $nz]}, "convection": "superbee", "drag": "bvk",
-    "deposition": $deposition,
-    "tolerances": {"linear": 1e-8, "filter": 1e-10, "steady": 1e-5},
-    "max_iterations": 20000
-  }
-}
-JSON
+  write_bubble_job "$job" "$nx" "$ny" "$nz" "$deposition"
   result="$out/align_${nx}_${ny}_${nz}.json"
   set +e
   "$worker" align "$job" --cells-y-offsets "$offsets" --threads "$threads" -q -o "$result"

@@ -7,6 +7,7 @@
 #
 #   bench/transfer_series.sh BIN_DIR OUT_DIR [--deposition JSON] [--threads N]
 set -euo pipefail
+source "$(dirname "$0")/bubble_job.sh"
 if [[ $# -lt 2 ]]; then
   echo "usage: $0 BIN_DIR OUT_DIR [--deposition JSON] [--threads N]" >&2
   exit 2
@@ -27,33 +28,13 @@ worker="$bin/gridfree-worker"
 mkdir -p "$out"
 # Surface position 28 n_y/200 in cells: 8.54 8.96 12.74 15.54 20.02 25.62 35.14 56.42 — no face.
 grids="9,61,3 11,74,4 14,91,5 17,111,6 21,143,7 27,183,9 38,251,13 60,403,20"
-echo "machine: $(nproc) cores, $(uname -m), $(date -u +%Y-%m-%dT%H:%MZ), load $(cut -d' ' -f1-3 /proc/loadavg)"
+machine_line
 echo "deposition: $deposition"
 echo "h,f" >"$out/series.csv"  # h = Δ*, f = dp*
 for g in $grids; do
   IFS=, read -r nx ny nz <<<"$g"
   job="$out/job_${nx}_${ny}_${nz}.json"
-  cat >"$job" <<JSON
-{
-  "schema": "gridfree/job/1",
-  "case": {
-    "name": "PC1", "domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
-    "gas": {"density_g_cm3": 1e-3, "viscosity_g_cm_s": 2e-4},
-    "gravity_cm_s2": [0, 0, 0],
-    "boundaries": {"x": "periodic", "z": "periodic",
-      "y_low": {"type": "mass_inflow", "superficial_velocity_cm_s": 20.0},
-      "y_high": {"type": "pressure_outflow", "pressure_dyn_cm2": 0.0}},
-    "particles": {"generator": {"kind": "bursting_bubble", "seed": 1}},
-    "probes": {"pressure_drop": {"y1_dp": 4, "y2_dp": 104}}
-  },
-  "numerics": {
-    "grid": {"cells": [$nx, $ny, $nz]}, "convection": "superbee", "drag": "bvk",
-    "deposition": $deposition,
-    "tolerances": {"linear": 1e-8, "filter": 1e-10, "steady": 1e-5},
-    "max_iterations": 20000
-  }
-}
-JSON
+  write_bubble_job "$job" "$nx" "$ny" "$nz" "$deposition"
   result="$out/result_${nx}_${ny}_${nz}.json"
   set +e
   "$worker" solve "$job" -q --threads "$threads" -o "$result"
