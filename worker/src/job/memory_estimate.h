@@ -6,10 +6,11 @@
 //
 // The orchestrator's plan and scheduler use the same model. Measured
 // 2026-11-29 on the bursting-bubble baseline (docs/BENCHMARKS.md, "Memory
-// per cell"): peak RSS 337 B/cell at 480 k cells, the heap at its peak 321 B/cell at 60 k (bench/memory_account.sh).
-// 400 B/cell leaves ≈ 20 % for what the baseline does not have (moving
-// particles add βv̄: 24 B/cell), plus 64 MiB for the executable, particles
-// and buffers.
+// per cell"): peak RSS 337 B/cell at 480 k cells and 319 B/cell at
+// 3.84 M, the heap at its peak 321 B/cell at 60 k (bench/memory_account.sh).
+// 400 B/cell leaves ≈ 25 % over the 3.84 M figure for what the baseline
+// does not have (moving particles add βv̄: 24 B/cell), plus 64 MiB for the
+// executable, particles and buffers.
 #pragma once
 
 #include <array>
