@@ -146,7 +146,7 @@ TEST_F(HostileInput, LongNamesAreRefusedWithAShortQuote) {
 
 TEST_F(HostileInput, WorkerMemoryLimit) {
   auto job = gridfree::test::contract_job();
-  job["numerics"]["grid"] = {{"cells", {300, 2000, 100}}};  // 6e7 cells: about 48 GiB estimated
+  job["numerics"]["grid"] = {{"cells", {300, 2000, 100}}};  // 6e7 cells: about 22 GiB estimated
   expect_job_refused(write("big.json", job.dump()), "/numerics/grid", " --max-memory 1G");
   job["numerics"]["grid"] = {{"cells", {30, 200, 10}}};
   expect_job_refused(write("small.json", job.dump()), "--max-memory", " --max-memory lots");

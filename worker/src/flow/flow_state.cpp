@@ -42,8 +42,6 @@ void face_average(const Grid& grid, int axis, const CellField& cell,
   }
 }
 
-double zero_gradient(int, double inside) { return inside; }
-
 }  // namespace
 
 void update_eps_faces(const FlowProblem& problem, FlowState& state) {
@@ -52,16 +50,6 @@ void update_eps_faces(const FlowProblem& problem, FlowState& state) {
     face_average(problem.grid, a, state.eps_g,
                  [&sides](int side, double inside) { return ghost_eps_g(sides[side], inside); },
                  state.eps_face[a]);
-  }
-}
-
-void update_drag_faces(const FlowProblem& problem, FlowState& state) {
-  for (int a = 0; a < 3; ++a) {
-    face_average(problem.grid, a, state.drag.beta, zero_gradient, state.beta_face[a]);
-    if (state.drag.beta_v[a].empty())
-      state.beta_v_face[a] = FaceField();  // no particle velocities: no storage (24 B per cell)
-    else
-      face_average(problem.grid, a, state.drag.beta_v[a], zero_gradient, state.beta_v_face[a]);
   }
 }
 

@@ -4,8 +4,10 @@
 //                boundaries, gas properties, convection scheme, and optional
 //                manufactured sources (the code-verification hook);
 //   FlowState    ε_g (frozen), p and the face velocities u (iterated), the
-//                drag field β, βv̄ (updated by the coupling), and the face
-//                averages derived from them.
+//                drag field β, βv̄ (updated by the coupling), and ε̄_g on the
+//                faces. β̄ and (βv̄)‾ are not stored: the momentum assembly
+//                averages the two cells of a face where it needs them
+//                (24 B per cell less, docs/SOLVER.md "Memory").
 #pragma once
 
 #include <array>
@@ -47,16 +49,11 @@ struct FlowState {
   CellField p;         // p at cell centres, dyn/cm²
   FaceVector u;        // interstitial gas velocity on the faces, cm/s
   DragField drag;      // β at cell centres
-  // Face averages (mean of the two cells; ghosts per boundary.h):
-  FaceVector eps_face;     // ε̄_g
-  FaceVector beta_face;    // β̄
-  FaceVector beta_v_face;  // (βv̄)‾; empty (= zero) when drag.beta_v is empty
+  FaceVector eps_face;  // ε̄_g: mean of the two cells (ghosts per boundary.h)
 };
 
 // ε̄_g on every face (ghost ε_g per boundary.h).
 void update_eps_faces(const FlowProblem& problem, FlowState& state);
-// β̄ and (βv̄)‾ on every face (zero-gradient ghosts).
-void update_drag_faces(const FlowProblem& problem, FlowState& state);
 // Sets the fixed boundary faces (walls, inflow) of state.u to their values.
 void apply_fixed_faces(const FlowProblem& problem, FlowState& state);
 

@@ -53,8 +53,9 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
                                                                  : nullptr;
   Stencil7& eq = sys.eq;
   if (d.size() != lay.size()) d = FaceField(g, a, 0.0);
-  sys.row_residual.resize(lay.size());
-  sys.row_scale.resize(lay.size());
+  // Per-row residual and |a_P φ_P| (0 on fixed faces), summed below; freed on
+  // return, before the linear solve allocates its vectors.
+  std::vector<double> row_residual(lay.size()), row_scale(lay.size());
   auto nb = neighbour_arrays(eq);
   const long faces = static_cast<long>(lay.size());
 
@@ -69,7 +70,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
       eq.ap[P] = 1.0;
       eq.b[P] = u[P];
       d[P] = 0.0;
-      sys.row_residual[P] = sys.row_scale[P] = 0.0;
+      row_residual[P] = row_scale[P] = 0.0;
       continue;
     }
     // Cells L (low) and R (high) of the face; a missing one is a ghost.
@@ -157,11 +158,18 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
       const double divR = divergence[g.index(xr[0], xr[1], xr[2])];
       b += mu / 3.0 * Aa * (divR - divL);
     }
-    if (!state.beta_v_face[a].values.empty()) b += V * state.beta_v_face[a][P];
+    // Face averages β̄ and (βv̄)‾ of the cells L, R (zero-gradient ghost).
+    const std::size_t cl = g.index(xl[0], xl[1], xl[2]), cr = g.index(xr[0], xr[1], xr[2]);
+    const auto face_mean = [&](const std::vector<double>& cell) {
+      const double lo = hasL ? cell[cl] : cell[cr];
+      const double hi = hasR ? cell[cr] : cell[cl];
+      return 0.5 * (lo + hi);
+    };
+    if (!state.drag.beta_v[a].empty()) b += V * face_mean(state.drag.beta_v[a]);
     if (source) b += V * (*source)[P];
-    const double ap = sum_nb + net_out + ap_fold + V * state.beta_face[a][P];
-    sys.row_residual[P] = b + sum_nb_phi - ap * u[P];
-    sys.row_scale[P] = std::abs(ap * u[P]);
+    const double ap = sum_nb + net_out + ap_fold + V * face_mean(state.drag.beta);
+    row_residual[P] = b + sum_nb_phi - ap * u[P];
+    row_scale[P] = std::abs(ap * u[P]);
 
     // Relaxation (the residual b + Σ a_nb φ_nb − a_P φ_P at the current
     // iterate is the same before and after it) and the SIMPLEC coefficient.
@@ -173,11 +181,11 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
   }
 
   // Residual sums in a fixed order (independent of the thread count).
-  const std::vector<double>& r = sys.row_residual;
+  const std::vector<double>& r = row_residual;
   sys.residual = deterministic_sum(r.size(), [&](std::size_t P) { return std::abs(r[P]); });
   sys.residual_l2 = std::sqrt(deterministic_sum(r.size(), [&](std::size_t P) { return r[P] * r[P]; }));
   sys.rhs_l2 = std::sqrt(deterministic_sum(r.size(), [&](std::size_t P) { return eq.b[P] * eq.b[P]; }));
-  sys.scale = deterministic_sum(r.size(), [&](std::size_t P) { return sys.row_scale[P]; });
+  sys.scale = deterministic_sum(r.size(), [&](std::size_t P) { return row_scale[P]; });
 }
 
 }  // namespace gridfree

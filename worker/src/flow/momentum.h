@@ -29,8 +29,6 @@ struct MomentumSystem {
   double scale = 0;     // Σ |a_P φ_P| (before relaxation)
   double residual_l2 = 0;  // ||b + Σ a_nb φ_nb − a_P φ_P||₂ (what the linear solver sees)
   double rhs_l2 = 0;       // ||b||₂ of the relaxed system
-  std::vector<double> row_residual;  // per row, at the iterate entering the assembly
-  std::vector<double> row_scale;     // |a_P φ_P| per row (0 on fixed faces)
 };
 
 // Assembles the a-momentum equation into `sys` (whose eq must live on

@@ -18,10 +18,10 @@ std::array<std::array<std::vector<double>*, 2>, 3> neighbour_arrays(Stencil7& s)
 PressureCorrectionResult correct_pressure(const FlowProblem& problem, FlowState& state,
                                           const FaceVector& d, double relax_p,
                                           const LinearSolverSettings& settings, Stencil7& eq,
-                                          SymmetricSolver& solver, std::vector<double>& p_prime) {
+                                          SymmetricSolver& solver, std::vector<double>& p_prime,
+                                          FaceVector& flux) {
   const Grid& g = problem.grid;
   const double rho = problem.gas.rho;
-  FaceVector flux;
   compute_mass_fluxes(problem, state, flux);
   auto nb = neighbour_arrays(eq);
   const long cells = static_cast<long>(g.cells());

@@ -26,10 +26,12 @@ struct PressureCorrectionResult {
   LinearSolveStats solve;
 };
 
-// `eq` and `p_prime` are work space on the cell grid.
+// `eq` and `p_prime` are work space on the cell grid; `flux` is work space
+// on the faces (left holding F of u*, before the correction).
 PressureCorrectionResult correct_pressure(const FlowProblem& problem, FlowState& state,
                                           const FaceVector& d, double relax_p,
                                           const LinearSolverSettings& settings, Stencil7& eq,
-                                          SymmetricSolver& solver, std::vector<double>& p_prime);
+                                          SymmetricSolver& solver, std::vector<double>& p_prime,
+                                          FaceVector& flux);
 
 }  // namespace gridfree

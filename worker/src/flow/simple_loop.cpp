@@ -35,16 +35,19 @@ Grid largest_face_grid(const Grid& g) {
   return FaceLayout(g, best).as_grid(g);
 }
 
-// Everything the loop allocates once.
+// Everything the loop keeps across outer iterations. The work of one phase
+// (the linear solvers' vectors, the pressure multigrid hierarchy, p') is
+// allocated in that phase and freed at its end, so the phases share memory
+// instead of each holding its own (docs/SOLVER.md "Memory").
 struct Workspace {
   explicit Workspace(const Grid& g) : momentum(largest_face_grid(g)) {}
-  SymmetricSolver pressure_solver;  // multigrid hierarchy kept across outer iterations
   // One system for the three momentum components in turn (each is
   // assembled and solved before the next), whose stencil then holds the
   // pressure correction (assembled afresh each iteration): a quarter of the
   // memory of four systems.
   MomentumSystem momentum;
-  std::vector<double> p_prime;
+  // F of the iterate entering the iteration (the momentum assembly's lagged
+  // fluxes); the pressure correction then overwrites it with F of u*.
   FaceVector mass_flux;
   FaceVector d;  // SIMPLEC coefficients
 };
@@ -90,43 +93,51 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     // 1. Drag from the current velocity field.
     const bool drag_fresh = !drag || (it - 1) % std::max(1, settings.drag_interval) == 0;
     if (drag && drag_fresh) drag(state, state.drag);
-    update_drag_faces(problem, state);
     clock.charge(out.seconds.drag);
 
     if (mixer) AndersonMixer::pack(state.u, state.p, x_entering);
     // 2. Momentum predictor: u* for each component with lagged mass fluxes.
     compute_mass_fluxes(problem, state, ws->mass_flux);
-    const CellField divergence = velocity_divergence(g, state.u);
     double momentum_residual = 0, momentum_scale = 0;
-    for (int a = 0; a < 3; ++a) {
-      MomentumSystem& sys = ws->momentum;
-      reshape_stencil(sys.eq, FaceLayout(g, a).as_grid(g));
-      assemble_momentum(problem, state, ws->mass_flux, divergence, a, settings.relax_u, sys, ws->d[a]);
-      momentum_residual += sys.residual;
-      momentum_scale += sys.scale;
-      // Inexact solve: reduce this component's residual ||r||/||b|| 10×
-      // (clamped to [linear_floor, momentum_tolerance]).
-      LinearSolverSettings solver = momentum_solver;
-      solver.tolerance = std::clamp(0.1 * normalized(sys.residual_l2, sys.rhs_l2), settings.linear_floor,
-                                    settings.momentum_tolerance);
-      const LinearSolveStats st = solve_general(sys.eq, state.u[a].values, solver);
-      report.momentum_iterations += st.iterations;
-      if (!st.converged) out.linear_failures = true;
-    }
+    {
+      const CellField divergence = velocity_divergence(g, state.u);
+      for (int a = 0; a < 3; ++a) {
+        MomentumSystem& sys = ws->momentum;
+        reshape_stencil(sys.eq, FaceLayout(g, a).as_grid(g));
+        assemble_momentum(problem, state, ws->mass_flux, divergence, a, settings.relax_u, sys, ws->d[a]);
+        momentum_residual += sys.residual;
+        momentum_scale += sys.scale;
+        // Inexact solve: reduce this component's residual ||r||/||b|| 10×
+        // (clamped to [linear_floor, momentum_tolerance]).
+        LinearSolverSettings solver = momentum_solver;
+        solver.tolerance = std::clamp(0.1 * normalized(sys.residual_l2, sys.rhs_l2), settings.linear_floor,
+                                      settings.momentum_tolerance);
+        const LinearSolveStats st = solve_general(sys.eq, state.u[a].values, solver);
+        report.momentum_iterations += st.iterations;
+        if (!st.converged) out.linear_failures = true;
+      }
+    }  // ∇·u is freed here
     clock.charge(out.seconds.momentum);
 
-    // 3. Pressure correction: p ← p + α_p p', u ← u* + d ∇p'.
+    // 3. Pressure correction: p ← p + α_p p', u ← u* + d ∇p'. Its multigrid
+    // hierarchy is rebuilt for new coefficients every iteration anyway, so
+    // it lives only for this step.
+    const double continuity_scale = continuity_reference(ws->mass_flux);
     reshape_stencil(ws->momentum.eq, g);
-    const PressureCorrectionResult pc =
-        correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->momentum.eq,
-                       ws->pressure_solver, ws->p_prime);
+    PressureCorrectionResult pc;
+    {
+      SymmetricSolver pressure_linear_solver;
+      std::vector<double> p_prime;
+      pc = correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->momentum.eq,
+                            pressure_linear_solver, p_prime, ws->mass_flux);
+    }
     report.pressure_iterations = pc.solve.iterations;
     if (mixer) mixer->mix(x_entering, state.u, state.p);
     if (!pc.solve.converged) out.linear_failures = true;
     clock.charge(out.seconds.pressure);
 
     // 4. Monitor: residuals, quantity of interest, status.
-    report.continuity = normalized(pc.imbalance, continuity_reference(ws->mass_flux));
+    report.continuity = normalized(pc.imbalance, continuity_scale);
     report.momentum = normalized(momentum_residual, momentum_scale);
     if (qoi) {
       report.qoi = qoi(state);

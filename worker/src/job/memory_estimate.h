@@ -4,9 +4,13 @@
 //
 //   memory(N) = kWorkerBytesPerCell · N + kWorkerBaseBytes
 //
-// The orchestrator's plan uses the same model. solver/4, 2026-11-29: peak
-// RSS 334 MB at 480 k cells ≈ 730 B/cell, 651 B/cell at 3.84 M (kept at 750,
-// docs/BENCHMARKS.md), plus 64 MiB for the executable, particles and buffers.
+// The orchestrator's plan and scheduler use the same model. Measured
+// 2026-11-29 on the bursting-bubble baseline (docs/BENCHMARKS.md, "Memory
+// per cell"): peak RSS 337 B/cell at 480 k cells and 319 B/cell at
+// 3.84 M, the heap at its peak 321 B/cell at 60 k (bench/memory_account.sh).
+// 400 B/cell leaves ≈ 25 % over the 3.84 M figure for what the baseline
+// does not have (moving particles add βv̄: 24 B/cell), plus 64 MiB for the
+// executable, particles and buffers.
 #pragma once
 
 #include <array>
@@ -17,7 +21,7 @@
 
 namespace gridfree {
 
-inline constexpr double kWorkerBytesPerCell = 750.0;
+inline constexpr double kWorkerBytesPerCell = 400.0;
 inline constexpr double kWorkerBaseBytes = 64.0 * 1024 * 1024;
 
 double job_memory_estimate_bytes(const std::array<int, 3>& cells);

@@ -50,7 +50,9 @@ LinearSolveStats bicgstab(const Stencil7& s, std::vector<double>& phi,
   LinearSolveStats stats;
   const std::size_t n = s.grid.cells();
   phi.resize(n, 0.0);
-  std::vector<double> r, r_hat, p(n, 0.0), v(n, 0.0), p_hat, s_vec, s_hat, t;
+  // s = r − α v is formed in r itself (r is not needed once s exists): eight
+  // vectors of n, not nine (docs/SOLVER.md "Memory").
+  std::vector<double> r, r_hat, p(n, 0.0), v(n, 0.0), p_hat, s_hat, t;
   const std::vector<double> initial = phi;
   stencil_residual(s, phi, r);
   const double norm_b = norm2(s.b);
@@ -100,13 +102,14 @@ LinearSolveStats bicgstab(const Stencil7& s, std::vector<double>& phi,
       continue;
     }
     alpha = rho / rv;
+    if (!finite(alpha)) break;
+    std::vector<double>& s_vec = r;  // s = r − α v, in place
     subtract_scaled(r, alpha, v, s_vec);
     const double norm_s = norm2(s_vec);
-    if (!finite(alpha) || !finite(norm_s)) break;
+    if (!finite(norm_s)) break;
     ++stats.iterations;
     if (norm_s <= target) {
       axpy(alpha, p_hat, phi);
-      r.swap(s_vec);
       norm_r = norm_s;
       stats.final_residual = norm_r / reference;
       continue;
@@ -118,7 +121,7 @@ LinearSolveStats bicgstab(const Stencil7& s, std::vector<double>& phi,
     omega = tt > 0 ? ts / tt : 0.0;
     if (!finite(omega)) break;
     add_two(alpha, p_hat, omega, s_hat, phi);
-    subtract_scaled(s_vec, omega, t, r);
+    subtract_scaled(s_vec, omega, t, r);  // r = s − ω t, in place
     norm_r = norm2(r);
     stats.final_residual = norm_r / reference;
     if (!finite(norm_r)) break;

@@ -27,14 +27,18 @@ LinearSolveStats preconditioned_cg(const Stencil7& s, std::vector<double>& phi,
   LinearSolveStats stats;
   const std::size_t n = s.grid.cells();
   phi.resize(n, 0.0);
-  w.b = s.b;
+  // The right-hand side: s.b itself, or a consistent copy (mean removed)
+  // for a singular system.
+  const std::vector<double>* b = &s.b;
   w.initial = phi;
   if (singular) {
+    w.b = s.b;
     remove_mean(w.b);
     remove_mean(phi);
+    b = &w.b;
   }
-  true_residual(s, w.b, phi, w.r);
-  const double norm_b = norm2(w.b);
+  true_residual(s, *b, phi, w.r);
+  const double norm_b = norm2(*b);
   double norm_r = norm2(w.r);
   const double reference = norm_b > 0 ? norm_b : norm_r;
   if (reference == 0 || !std::isfinite(reference)) {
@@ -50,7 +54,7 @@ LinearSolveStats preconditioned_cg(const Stencil7& s, std::vector<double>& phi,
   while (true) {
     if (norm_r <= target) {
       // Confirm on the true residual (the recurrence drifts by round-off).
-      true_residual(s, w.b, phi, w.r);
+      true_residual(s, *b, phi, w.r);
       norm_r = norm2(w.r);
       stats.final_residual = norm_r / reference;
       if (norm_r <= target || stats.iterations >= settings.max_iterations) break;

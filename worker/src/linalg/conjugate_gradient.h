@@ -19,6 +19,8 @@
 
 namespace gridfree {
 
+// Work vectors of one solve (b only for a singular system: the consistent
+// right-hand side).
 struct CgWorkspace {
   std::vector<double> b, r, z, p, q, initial;
 };

@@ -25,7 +25,8 @@ LinearSolveStats SymmetricSolver::solve(std::vector<double>& phi,
   Preconditioner& m = options_.preconditioner == SymmetricPreconditioner::kMultigrid
                           ? static_cast<Preconditioner&>(multigrid_)
                           : static_cast<Preconditioner&>(jacobi_);
-  return preconditioned_cg(*stencil_, phi, m, settings, singular_, work_);
+  CgWorkspace work;  // freed on return: the caller's other phases reuse the memory
+  return preconditioned_cg(*stencil_, phi, m, settings, singular_, work);
 }
 
 LinearSolveStats SymmetricSolver::solve(const Stencil7& s, std::vector<double>& phi,

@@ -3,9 +3,9 @@
 // gradients (conjugate_gradient.h) with an aggregation-multigrid V-cycle
 // (multigrid.h, the default) or Jacobi as preconditioner.
 //
-// A SymmetricSolver keeps its multigrid hierarchy and work vectors between
-// calls, so a solver that re-solves on the same grid with new coefficients
-// every outer iteration (SIMPLE) pays only the O(N) re-aggregation. The free
+// A SymmetricSolver keeps its multigrid hierarchy between calls, so a solver
+// that re-solves with the same coefficients (the filter) builds it once. The
+// Krylov vectors live only during solve(): memory is not held between calls. The free
 // function solve_symmetric (stencil.h) builds a fresh one per call.
 //
 // Singular systems are detected (stencil_is_singular: no Dirichlet part in
@@ -53,7 +53,6 @@ class SymmetricSolver {
   bool singular_ = false;
   MultigridPreconditioner multigrid_;
   JacobiPreconditioner jacobi_;
-  CgWorkspace work_;
 };
 
 }  // namespace gridfree
