@@ -21,9 +21,17 @@ void warn_close_grids(const std::vector<std::string>& warnings) {
 
 // Grid-design warnings (extrap/grid_design.h) for every series, on stderr;
 // identical warnings of series that share their grids are printed once.
-void print_grid_warnings(const ExpandedStudy& ex) {
+void print_grid_warnings(const Study& study, const ExpandedStudy& ex) {
   std::map<std::size_t, std::vector<double>> h;
   for (const auto& j : ex.jobs) h[j.series].push_back(j.delta_star);
+  if (study.adaptive_grids) {  // judged on the whole ladder; its coarse rungs stay in every fit
+    for (auto& [series, grids] : h) grids = study.grid_delta_star;
+    if (study.adaptive_grids->coarsest_delta_star > kAsymptoticDeltaStar)
+      std::cerr << "warning: /grids/coarsest_delta_star " << study.adaptive_grids->coarsest_delta_star << " > "
+                << kAsymptoticDeltaStar
+                << ": the coarse rungs stay in every fit of the series and can keep it pre-asymptotic "
+                   "(docs/EXTRAPOLATION.md \"Adaptive series\")\n";
+  }
   std::vector<std::string> printed;
   for (const auto& [series, grids] : h) {
     for (const auto& w : grid_design_warnings(grids)) {
@@ -44,7 +52,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     warn_close_grids(neighbour_warnings(grid_listing(study)));
-    print_grid_warnings(ex);
+    print_grid_warnings(study, ex);
     std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
@@ -69,7 +77,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
-    print_grid_warnings(ex);
+    print_grid_warnings(study, ex);
     const auto grids = grid_listing(study);
     const auto warnings = neighbour_warnings(grids);
     const double rde = *target > 0 ? *target : study.adaptive_grids ? study.adaptive_grids->target_rde : 0;

@@ -4,7 +4,8 @@
 // with the f0 of the fixed series on the whole ladder; every decision is an
 // event and in the report; a rerun adds nothing; a run killed with -9 and
 // resumed by the daemon makes the same decisions without duplicates; a
-// memory cap ends the series target_not_reached; `plan --target-rde` is
+// memory cap ends the series target_not_reached; `validate` judges the
+// whole ladder and warns about a start above Δ* 2; `plan --target-rde` is
 // a-priori without a database and fitted to the finished series with one.
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -186,6 +187,19 @@ TEST(AdaptiveCli, BadAdaptiveFieldsAreRefusedWithTheirPath) {
   EXPECT_NE(r.err.find("/grids/ratio"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("/grids/max_memory"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "g.sqlite"));
+}
+
+TEST(AdaptiveCli, ValidateJudgesTheWholeLadderAndWarnsAboutACoarseStart) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_cli_test", "warn");
+  write_study(dir, "coarse", adaptive_grids());  // starts at Δ* 3.3
+  write_study(dir, "fine", adaptive_grids({{"coarsest_delta_star", 2.0}}));
+  auto r = gridfree_in(dir, "validate coarse.json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("/grids/coarsest_delta_star 3.3 > 2"), std::string::npos) << r.err;
+  r = gridfree_in(dir, "validate fine.json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;  // not "4 grids leave 1 degree of freedom"
+  EXPECT_NE(r.out.find("ok: 1 series, 4 jobs"), std::string::npos) << r.out;
 }
 
 TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
