@@ -91,10 +91,10 @@ std::optional<AdaptiveGrids> parse_adaptive_grids(const nlohmann::json& g, Probl
   a.coarsest_delta_star = *coarsest;
   a.ratio = *ratio;
   a.finest_delta_star = *finest;
-  if (adaptive_ladder(a).size() < AdaptiveGrids::kFirstGrids) {
+  if (adaptive_ladder(a).size() < AdaptiveGrids::kMinLadder) {
     problems.add("/grids/finest_delta_star", "the ladder from coarsest_delta_star by ratio holds fewer than " +
-                                                 std::to_string(AdaptiveGrids::kFirstGrids) +
-                                                 " grids down to finest_delta_star; an extrapolation needs 4");
+                                                 std::to_string(AdaptiveGrids::kMinLadder) +
+                                                 " grids down to finest_delta_star; a converged verdict needs 5");
     return std::nullopt;
   }
   return a;

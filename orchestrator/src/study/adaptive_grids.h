@@ -34,6 +34,9 @@ struct AdaptiveGrids {
   // Grids run before the first extrapolation: the least-squares fits need 4
   // (docs/PHYSICS.md §8).
   static constexpr std::size_t kFirstGrids = 4;
+  // Fewest rungs a ladder may have: a `converged` verdict needs n − 3 ≥ 2
+  // degrees of freedom (docs/EXTRAPOLATION.md "Verdicts").
+  static constexpr std::size_t kMinLadder = 5;
 };
 
 // The ladder Δ*_0 > Δ*_1 > ... > Δ*_K (see above).

@@ -80,7 +80,7 @@ TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model)
       cp.grids.push_back(g);
     }
     cp.reachable = first_met < ds.size();
-    const std::size_t last = cp.reachable ? std::max(first_met, std::size_t{3}) : ds.size() - 1;
+    const std::size_t last = cp.reachable ? std::max(first_met, kMinGridsForConverged - 1) : ds.size() - 1;
     for (std::size_t k = 0; k < cp.grids.size() && k <= last; ++k) {
       cp.grids[k].needed = true;
       cp.grids_needed += 1;

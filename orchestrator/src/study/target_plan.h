@@ -11,7 +11,9 @@
 // bubble baseline: RDE 0.78 % at Δ* 0.564 with p = 1.00, docs/BENCHMARKS.md).
 // The candidate grids are the study's ladder (adaptive grids) or its grid
 // list, coarse to fine. Needed: the grids from the coarsest down to the first
-// whose predicted RDE ≤ target, at least the 4 an extrapolation needs. Cost:
+// whose predicted RDE ≤ target, at least kMinGridsForConverged (a `converged`
+// verdict needs n − 3 ≥ 2 degrees of freedom, docs/EXTRAPOLATION.md
+// "Verdicts"; an adaptive series stops at its fifth grid at the earliest). Cost:
 // the cost model's one-thread CPU time (study/study_plan.h) times the
 // measured scale s of the similar series (Σ cpu_s / Σ model; 1 without them),
 // peak memory the largest needed grid's estimate.
@@ -28,6 +30,7 @@
 
 namespace gridfree {
 
+inline constexpr std::size_t kMinGridsForConverged = 5;
 inline constexpr double kAprioriOrder = 1.0;
 inline constexpr double kAprioriRdeAtUnitDeltaStar = 0.0078 / 0.564;
 

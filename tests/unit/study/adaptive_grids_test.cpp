@@ -75,13 +75,13 @@ TEST(AdaptiveGrids, EveryBadFieldIsNamed) {
   EXPECT_TRUE(has(p, "/grids/max_cpu_s")) << ::testing::PrintToString(p);
 }
 
-TEST(AdaptiveGrids, FinestMustBeBelowCoarsestAndLeaveFourRungs) {
+TEST(AdaptiveGrids, FinestMustBeBelowCoarsestAndLeaveFiveRungs) {
   auto doc = adaptive_study();
   doc["grids"]["finest_delta_star"] = 4.0;
   EXPECT_TRUE(has(problems_of(doc), "/grids/finest_delta_star"));
-  doc["grids"]["finest_delta_star"] = 2.0;  // 3.3, 2.64, 2.11: three rungs
+  doc["grids"]["finest_delta_star"] = 1.36;  // 3.3 … 3.3/1.25^3 = 1.69: four rungs
   EXPECT_TRUE(has(problems_of(doc), "/grids/finest_delta_star"));
-  doc["grids"]["finest_delta_star"] = 1.68;  // 3.3/1.25^3 = 1.6896: four
+  doc["grids"]["finest_delta_star"] = 1.35;  // 3.3/1.25^4 = 1.3517: five
   EXPECT_TRUE(problems_of(doc).empty()) << ::testing::PrintToString(problems_of(doc));
 }
 

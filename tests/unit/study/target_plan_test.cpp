@@ -1,7 +1,8 @@
 // plan --target-rde's model and choice (study/target_plan.h): the log-log
 // least squares recovers a and p of an exact power law; fewer than two
 // distinct Δ* fall back to the a-priori model; the needed grids run from the
-// coarsest to the first predicted at or below the target, at least four;
+// coarsest to the first predicted at or below the target, at least five (a
+// converged verdict needs them);
 // a target below every prediction is reported unreachable with all grids.
 #include <gtest/gtest.h>
 
@@ -36,25 +37,29 @@ TEST(TargetPlan, TooLittleDataIsAPriori) {
   EXPECT_NEAR(m.predict(0.564), 0.0078, 1e-12);  // the baseline it is taken from
 }
 
-TEST(TargetPlan, NeedsGridsDownToTheFirstMeetingTheTargetAndAtLeastFour) {
+TEST(TargetPlan, NeedsGridsDownToTheFirstMeetingTheTargetAndAtLeastFive) {
+  auto doc = read_json_file(kSource + "/studies/quickstart.json");
+  doc["grids"] = {{"delta_star", {1.6, 2.0, 1.28, 1.02, 0.82, 0.66, 0.52}}};  // any order: sorted coarse to fine
+  const Study study = parse_study_document(doc, kSource + "/studies");
   RdeModel m;
   m.a = 0.01;
-  m.p = 1;  // RDE = 1 %·Δ*: 2 %, 1.33 %, 1 %, 0.8 %, 0.667 %
-  auto plan = plan_for_target(quickstart(), 0.0085, m);
+  m.p = 1;  // RDE = 1 %·Δ*: 2, 1.6, 1.28, 1.02, 0.82, 0.66, 0.52 %
+  auto plan = plan_for_target(study, 0.007, m);
   ASSERT_EQ(plan.cases.size(), 1u);
   const auto& c = plan.cases.front();
   EXPECT_EQ(c.series, 2u);
   EXPECT_TRUE(c.reachable);
-  EXPECT_EQ(c.grids_needed, 4u);  // Δ* 0.8 is the first ≤ 0.85 %
-  EXPECT_TRUE(c.grids[3].needed);
-  EXPECT_FALSE(c.grids[4].needed);
+  EXPECT_EQ(c.grids_needed, 6u);  // Δ* 0.66 is the first ≤ 0.7 %
+  EXPECT_DOUBLE_EQ(c.grids[5].delta_star, 0.66);
+  EXPECT_TRUE(c.grids[5].needed);
+  EXPECT_FALSE(c.grids[6].needed);
   double cpu = 0;
-  for (std::size_t k = 0; k < 4; ++k) cpu += c.grids[k].cpu_s;
+  for (std::size_t k = 0; k < 6; ++k) cpu += c.grids[k].cpu_s;
   EXPECT_DOUBLE_EQ(c.cpu_s_per_series, cpu);
   EXPECT_DOUBLE_EQ(plan.total_cpu_s, 2 * cpu);
-  EXPECT_DOUBLE_EQ(c.peak_memory_bytes, c.grids[3].memory_bytes);
-  plan = plan_for_target(quickstart(), 0.05, m);  // met by the coarsest: still four
-  EXPECT_EQ(plan.cases.front().grids_needed, 4u);
+  EXPECT_DOUBLE_EQ(c.peak_memory_bytes, c.grids[5].memory_bytes);
+  plan = plan_for_target(study, 0.05, m);  // met by the coarsest: still five
+  EXPECT_EQ(plan.cases.front().grids_needed, kMinGridsForConverged);
 }
 
 TEST(TargetPlan, UnreachableTargetUsesEveryGridAndSaysSo) {
