@@ -1,5 +1,5 @@
-// gridfree validate STUDY  and  gridfree plan STUDY [--json] [-j N]:
-// read-only; nothing is written anywhere.
+// gridfree validate STUDY  and  gridfree plan STUDY [--json] [-j N]
+// [--target-rde X] [--db FILE]: read-only; nothing is written anywhere.
 #include <algorithm>
 #include <iostream>
 #include <map>
@@ -10,6 +10,7 @@
 #include "study/grid_listing.h"
 #include "extrap/grid_design.h"
 #include "study/study_plan.h"
+#include "sched/adaptive_prior.h"
 
 namespace gridfree::cli {
 namespace {
@@ -20,9 +21,17 @@ void warn_close_grids(const std::vector<std::string>& warnings) {
 
 // Grid-design warnings (extrap/grid_design.h) for every series, on stderr;
 // identical warnings of series that share their grids are printed once.
-void print_grid_warnings(const ExpandedStudy& ex) {
+void print_grid_warnings(const Study& study, const ExpandedStudy& ex) {
   std::map<std::size_t, std::vector<double>> h;
   for (const auto& j : ex.jobs) h[j.series].push_back(j.delta_star);
+  if (study.adaptive_grids) {  // judged on the whole ladder; its coarse rungs stay in every fit
+    for (auto& [series, grids] : h) grids = study.grid_delta_star;
+    if (study.adaptive_grids->coarsest_delta_star > kAsymptoticDeltaStar)
+      std::cerr << "warning: /grids/coarsest_delta_star " << study.adaptive_grids->coarsest_delta_star << " > "
+                << kAsymptoticDeltaStar
+                << ": the coarse rungs stay in every fit of the series and can keep it pre-asymptotic "
+                   "(docs/EXTRAPOLATION.md \"Adaptive series\")\n";
+  }
   std::vector<std::string> printed;
   for (const auto& [series, grids] : h) {
     for (const auto& w : grid_design_warnings(grids)) {
@@ -43,7 +52,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     warn_close_grids(neighbour_warnings(grid_listing(study)));
-    print_grid_warnings(ex);
+    print_grid_warnings(study, ex);
     std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
@@ -57,21 +66,33 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   sub->add_option("STUDY", *file, "study JSON file")->required();
   sub->add_flag("--json", *json, "print the plan as JSON");
   sub->add_option("-j,--jobs", *jobs, "jobs at a time (for the wall-time estimate)");
-  sub->callback([file, json, jobs, &exit_code] {
+  auto target = std::make_shared<double>(0);
+  auto db = std::make_shared<std::string>(kDefaultDb);
+  sub->add_option("--target-rde", *target,
+                  "predict the grids a target RDE (fraction, 0.01 = 1 %) needs and their cost (default for "
+                  "adaptive grids: their target_rde)")
+      ->check(CLI::Range(1e-12, 0.999999));
+  sub->add_option("--db", *db, "database whose finished similar series inform --target-rde (only read)");
+  sub->callback([file, json, jobs, target, db, &exit_code] {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
-    print_grid_warnings(ex);
+    print_grid_warnings(study, ex);
     const auto grids = grid_listing(study);
     const auto warnings = neighbour_warnings(grids);
+    const double rde = *target > 0 ? *target : study.adaptive_grids ? study.adaptive_grids->target_rde : 0;
+    std::optional<TargetPlan> tp;
+    if (rde > 0) tp = plan_for_target(study, rde, prior_rde_model(*db, study));
     if (*json) {
       auto j = plan_to_json(plan);
       j["grids"] = grid_listing_json(grids);
       j["warnings"] = warnings;
+      if (tp) j["target"] = target_plan_json(*tp);
       std::cout << j.dump(2) << '\n';
     } else {
       std::cout << "study " << study.name << ": " << study.design_description() << "\n" << plan_to_table(plan)
                 << "\n" << grid_listing_table(grids);
+      if (tp) std::cout << "\n" << target_plan_text(*tp);
     }
     warn_close_grids(warnings);
     exit_code = to_int(ExitCode::kOk);

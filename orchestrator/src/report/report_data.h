@@ -41,6 +41,7 @@ struct StudyReportData {
   std::vector<std::string> generator_kinds;
   bool export_charts = true;         // PDF/PNG beside every SVG (report/chart_export.h)  // particle generators of the study's cases (report_about.h)
   std::vector<SeriesData> series;
+  std::vector<std::string> adaptive_decisions;  // adaptive series: every decision in order (report/adaptive_section.h)
 };
 
 }  // namespace gridfree

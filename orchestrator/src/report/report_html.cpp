@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "report/adaptive_section.h"
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
@@ -132,6 +133,7 @@ std::string render_html(const ReportContent& c) {
   }
   out += contents(c);
   out += verdict_section(c);
+  out += adaptive_section_html(c.data.adaptive_decisions);
   out += about_section(c);
   out += table_section(c.series_table, "series", "No series.");
   out += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");

@@ -1,6 +1,7 @@
 // report.md: summary, tables, and links to the SVG charts beside it.
 #include <string>
 
+#include "report/adaptive_section.h"
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
@@ -42,6 +43,7 @@ std::string render_markdown(const ReportContent& c) {
     for (const auto& n : v.notes) out += "  - Note: " + n + "\n";
   }
   out += "\n";
+  out += adaptive_section_markdown(c.data.adaptive_decisions);
   for (const auto& a : about_sections(c.data.generator_kinds)) {
     out += "## " + a.title + "\n\n";
     for (const auto& p : a.paragraphs) out += p + "\n\n";

@@ -9,6 +9,7 @@
 #include "core/version.h"
 #include "extrap/verdict.h"
 #include "report/report.h"
+#include "sched/adaptive_series.h"
 
 namespace gridfree {
 namespace {
@@ -162,6 +163,7 @@ nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extra
 
 int finish_ready_series(Store& store, long long study_id) {
   int finished = 0;
+  advance_adaptive_series(store, study_id);  // adaptive series: refine or stop first
   const auto ready = store.series_ready(study_id);
   if (!ready.empty()) {
     const auto extrapolate = library_extrapolator(study_extrapolation_settings(store, study_id));
@@ -190,6 +192,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   d.p_low = settings.p_low;
   d.p_high = settings.p_high;
   d.generator_kinds = generator_kinds(store.study_definition(study_id));
+  for (const auto& e : adaptive_events(store, study_id)) d.adaptive_decisions.push_back(e.message);
   for (const auto& s : store.series_of_study(study_id)) {
     SeriesData sd;
     sd.id = s.id;

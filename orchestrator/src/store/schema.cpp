@@ -1,5 +1,5 @@
-// Schema version 4 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
-// state; 4: series verdicts). Status words (docs/INTERFACE.md §5):
+// Schema version 5 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
+// state; 4: series verdicts; 5: adaptive series). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -263,6 +263,16 @@ LEFT JOIN uncertainties fu ON fu.series_id = se.id AND fu.delta_star =
   (SELECT MIN(m.delta_star) FROM uncertainties m WHERE m.series_id = se.id);
 )sql";
 
+// Step 5 — adaptive grid series (sched/adaptive_series.h): a series run to a
+// target RDE is 'refining' until it stops, then 'target_met' or
+// 'target_not_reached'; adaptive_note is the decision's sentence. NULL for
+// series with a grid list.
+constexpr const char* kV5AdaptiveSeries = R"sql(
+ALTER TABLE series ADD COLUMN adaptive_status TEXT
+  CHECK (adaptive_status IS NULL OR adaptive_status IN ('refining','target_met','target_not_reached'));
+ALTER TABLE series ADD COLUMN adaptive_note TEXT;
+)sql";
+
 }  // namespace
 
 int schema_version(Database& db) {
@@ -286,6 +296,7 @@ void migrate(Database& db) {
   if (v < 2) db.exec(kV2NominalDeltaStar);
   if (v < 3) db.exec(kV3SlurmState);
   if (v < 4) db.exec(kV4SeriesVerdict);
+  if (v < 5) db.exec(kV5AdaptiveSeries);
   db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   tx.commit();
 }

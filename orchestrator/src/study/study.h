@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "job/job_spec.h"
+#include "study/adaptive_grids.h"
 
 namespace gridfree {
 
@@ -58,6 +59,7 @@ struct Study {
   std::optional<SeriesKey> baseline;  // set for one_at_a_time designs
   std::vector<double> grid_delta_star;            // grids: {"delta_star": [...]}
   std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}
+  std::optional<AdaptiveGrids> adaptive_grids;    // or grids as a target (grid_delta_star = its ladder)
   nlohmann::json numerics = nlohmann::json::object();  // merged into every job
   ExtrapolationSettings extrapolation;
 

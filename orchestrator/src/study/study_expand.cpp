@@ -100,6 +100,7 @@ ExpandedStudy expand(const Study& s) {
     const auto grids = grids_for_case(s, *c);
     std::set<std::string> hashes;
     for (std::size_t g = 0; g < grids.size(); ++g) {
+      if (s.adaptive_grids && g >= AdaptiveGrids::kFirstGrids) break;  // the rest as decided (sched/adaptive_series.h)
       StudyJob job;
       job.series = si;
       job.grid = g;

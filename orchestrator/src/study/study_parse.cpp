@@ -242,6 +242,10 @@ void parse_grids(const json& doc, Study& s, ProblemList& problems) {
     add_once(problems, "/grids", "required: {\"delta_star\": [...]} or {\"cells\": [[nx,ny,nz], ...]}");
     return;
   }
+  if (g->contains("target_rde")) {  // adaptive series (study/adaptive_grids.h)
+    if ((s.adaptive_grids = parse_adaptive_grids(*g, problems))) s.grid_delta_star = adaptive_ladder(*s.adaptive_grids);
+    return;
+  }
   const bool ds = g->contains("delta_star"), cs = g->contains("cells");
   if (ds == cs) {
     add_once(problems, "/grids", "give exactly one of delta_star and cells");
@@ -370,7 +374,7 @@ void check_grids(const Study& s, ProblemList& problems) {
         continue;
       }
       const double mem = estimated_memory_bytes(grids[i]);
-      if (machine > 0 && mem > machine)
+      if (machine > 0 && mem > machine && !s.adaptive_grids)  // adaptive: a cap, not an error
         add_once(problems, list + std::to_string(i),
                  "estimated memory " + human_bytes(mem) + " exceeds this machine's " + human_bytes(machine));
     }

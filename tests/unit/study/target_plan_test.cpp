@@ -1,0 +1,84 @@
+// plan --target-rde's model and choice (study/target_plan.h): the log-log
+// least squares recovers a and p of an exact power law; fewer than two
+// distinct Δ* fall back to the a-priori model; the needed grids run from the
+// coarsest to the first predicted at or below the target, at least five (a
+// converged verdict needs them);
+// a target below every prediction is reported unreachable with all grids.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "study/target_plan.h"
+
+namespace gridfree {
+namespace {
+
+const std::string kSource = GRIDFREE_SOURCE_DIR;
+
+Study quickstart() { return parse_study(kSource + "/studies/quickstart.json"); }  // Δ* 2, 1.333, 1, 0.8, 0.667
+
+TEST(TargetPlan, FitRecoversAnExactPowerLaw) {
+  std::vector<std::array<double, 2>> pts;
+  for (double h : {2.0, 1.5, 1.0, 0.7}) pts.push_back({h, 0.02 * std::pow(h, 1.7)});
+  const auto m = fit_rde_model(pts);
+  EXPECT_FALSE(m.a_priori);
+  EXPECT_EQ(m.points, 4u);
+  EXPECT_NEAR(m.p, 1.7, 1e-12);
+  EXPECT_NEAR(m.a, 0.02, 1e-14);
+  EXPECT_NEAR(m.predict(0.5), 0.02 * std::pow(0.5, 1.7), 1e-14);
+}
+
+TEST(TargetPlan, TooLittleDataIsAPriori) {
+  EXPECT_TRUE(fit_rde_model({}).a_priori);
+  EXPECT_TRUE(fit_rde_model({{1.0, 0.01}, {1.0, 0.02}}).a_priori);  // one Δ*
+  EXPECT_TRUE(fit_rde_model({{1.0, 0.01}, {0.5, 0.0}}).a_priori);   // RDE 0 has no logarithm
+  const RdeModel m;
+  EXPECT_DOUBLE_EQ(m.p, 1.0);
+  EXPECT_NEAR(m.predict(0.564), 0.0078, 1e-12);  // the baseline it is taken from
+}
+
+TEST(TargetPlan, NeedsGridsDownToTheFirstMeetingTheTargetAndAtLeastFive) {
+  auto doc = read_json_file(kSource + "/studies/quickstart.json");
+  doc["grids"] = {{"delta_star", {1.6, 2.0, 1.28, 1.02, 0.82, 0.66, 0.52}}};  // any order: sorted coarse to fine
+  const Study study = parse_study_document(doc, kSource + "/studies");
+  RdeModel m;
+  m.a = 0.01;
+  m.p = 1;  // RDE = 1 %·Δ*: 2, 1.6, 1.28, 1.02, 0.82, 0.66, 0.52 %
+  auto plan = plan_for_target(study, 0.007, m);
+  ASSERT_EQ(plan.cases.size(), 1u);
+  const auto& c = plan.cases.front();
+  EXPECT_EQ(c.series, 2u);
+  EXPECT_TRUE(c.reachable);
+  EXPECT_EQ(c.grids_needed, 6u);  // Δ* 0.66 is the first ≤ 0.7 %
+  EXPECT_DOUBLE_EQ(c.grids[5].delta_star, 0.66);
+  EXPECT_TRUE(c.grids[5].needed);
+  EXPECT_FALSE(c.grids[6].needed);
+  double cpu = 0;
+  for (std::size_t k = 0; k < 6; ++k) cpu += c.grids[k].cpu_s;
+  EXPECT_DOUBLE_EQ(c.cpu_s_per_series, cpu);
+  EXPECT_DOUBLE_EQ(plan.total_cpu_s, 2 * cpu);
+  EXPECT_DOUBLE_EQ(c.peak_memory_bytes, c.grids[5].memory_bytes);
+  plan = plan_for_target(study, 0.05, m);  // met by the coarsest: still five
+  EXPECT_EQ(plan.cases.front().grids_needed, kMinGridsForConverged);
+}
+
+TEST(TargetPlan, UnreachableTargetUsesEveryGridAndSaysSo) {
+  RdeModel m;
+  m.a = 0.01;
+  const auto plan = plan_for_target(quickstart(), 0.001, m);
+  EXPECT_FALSE(plan.cases.front().reachable);
+  EXPECT_EQ(plan.cases.front().grids_needed, 5u);
+  EXPECT_NE(target_plan_text(plan).find("not reachable"), std::string::npos);
+  EXPECT_FALSE(target_plan_json(plan)["cases"][0]["reachable"].get<bool>());
+}
+
+TEST(TargetPlan, CostScaleMultipliesTheCostModel) {
+  RdeModel m;
+  const auto one = plan_for_target(quickstart(), 0.01, m);
+  m.cost_scale = 3;
+  const auto three = plan_for_target(quickstart(), 0.01, m);
+  EXPECT_NEAR(three.total_cpu_s, 3 * one.total_cpu_s, 1e-9 * one.total_cpu_s);
+}
+
+}  // namespace
+}  // namespace gridfree

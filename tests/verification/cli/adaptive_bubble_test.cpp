@@ -1,0 +1,125 @@
+// An adaptive series on a real, small bursting bubble (the fictitious
+// bubble of docs/PHYSICS.md §6 in a 20 × 60 × 10 dp domain, the smallest the
+// generator allows with the freeboard cut at 60; each job a few seconds)
+// against the fixed series on the same ladder Δ* = 2/1.25^k, k = 0..5,
+// computed in the same test with the real worker:
+//
+//  - the adaptive series (target 1 %) ends target_met with fewer grids than
+//    the ladder, and records the compute it did not spend;
+//  - it stopped at the first grid that meets the rule: `gridfree extrapolate`
+//    on every shorter prefix (≥ 4 grids) of the fixed series' dp* — the same
+//    jobs, so the same numbers — gives a verdict other than converged or an
+//    RDE above the target, and on the adaptive series' own grids it meets it;
+//  - its f0 equals the fixed series' f0 within the larger of their U.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "run_command.h"
+#include "scratch_dir.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kSource = GRIDFREE_SOURCE_DIR;
+const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
+constexpr double kTarget = 0.01;
+
+gridfree::test_support::CommandRun gridfree_in(const fs::path& dir, const std::string& args) {
+  return gridfree::test_support::run_command("cd '" + dir.string() + "' && '" + kGridfree.string() + "' " + args,
+                                             dir / "stderr.txt");
+}
+
+std::string sql(const fs::path& db, const std::string& query) {
+  auto r = gridfree::test_support::run_command("sqlite3 '" + db.string() + "' \"" + query + "\"",
+                                               db.parent_path() / "sql.txt");
+  while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
+  return r.out;
+}
+
+void write_study(const fs::path& dir, const std::string& name, const nlohmann::json& grids) {
+  std::ifstream in(kSource / "studies/quickstart.json");
+  auto doc = nlohmann::json::parse(in);
+  doc["name"] = name;
+  auto c = doc["cases"]["PC1"];
+  c["domain_dp"] = {20, 60, 10};
+  c["probes"]["pressure_drop"] = {{"y1_dp", 4}, {"y2_dp", 54}};
+  doc["cases"] = {{"small", c}};
+  doc.erase("factors");
+  doc.erase("design");
+  doc["grids"] = grids;
+  std::ofstream(dir / (name + ".json")) << doc.dump(2);
+}
+
+// (h, f) of a database's only series, coarse to fine.
+std::vector<std::pair<double, double>> series_of(const fs::path& db) {
+  std::stringstream rows(sql(db, "SELECT delta_star, dp_star FROM v_results ORDER BY delta_star DESC"));
+  std::vector<std::pair<double, double>> out;
+  double h = 0, f = 0;
+  char bar = 0;
+  while (rows >> h >> bar >> f) out.emplace_back(h, f);
+  return out;
+}
+
+// `gridfree extrapolate` on the first n points: verdict and the finest grid's RDE.
+std::pair<std::string, double> extrapolate_prefix(const fs::path& dir, const std::vector<std::pair<double, double>>& s,
+                                                  std::size_t n) {
+  nlohmann::json in = {{"h", nlohmann::json::array()}, {"f", nlohmann::json::array()}};
+  for (std::size_t k = 0; k < n; ++k) {
+    in["h"].push_back(s[k].first);
+    in["f"].push_back(s[k].second);
+  }
+  std::ofstream(dir / "prefix.json") << in.dump();
+  const auto r = gridfree_in(dir, "extrapolate prefix.json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto ex = nlohmann::json::parse(r.out);
+  double rde = NAN, finest = INFINITY;
+  for (const auto& g : ex["grids"])
+    if (g["h"].get<double>() < finest) finest = g["h"].get<double>(), rde = g["rde"].get<double>();
+  return {ex["verdict"]["value"].get<std::string>(), rde};
+}
+
+TEST(AdaptiveBubble, StopsAtTheFirstGridMeetingTheTargetWithTheFixedSeriesF0) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_bubble_test", "bubble");
+  std::vector<double> ladder;
+  for (int k = 0; k <= 5; ++k) ladder.push_back(2.0 / std::pow(1.25, k));  // 2 → 0.655
+  write_study(dir, "fixed", {{"delta_star", ladder}});
+  write_study(dir, "adaptive", {{"target_rde", kTarget}, {"coarsest_delta_star", 2.0}, {"ratio", 1.25},
+                                {"finest_delta_star", 0.6}});
+  auto r = gridfree_in(dir, "run fixed.json -j 2 --db f.sqlite");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = gridfree_in(dir, "run adaptive.json -j 2 --db a.sqlite");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = dir / "a.sqlite", f = dir / "f.sqlite";
+
+  ASSERT_EQ(sql(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged")
+      << sql(a, "SELECT adaptive_note FROM series");
+  const auto fixed = series_of(f), adaptive = series_of(a);
+  ASSERT_EQ(fixed.size(), ladder.size());
+  ASSERT_LT(adaptive.size(), fixed.size()) << "the target should be met before the finest rung";
+  EXPECT_NE(sql(a, "SELECT adaptive_note FROM series").find("saved an estimated"), std::string::npos);
+  // Same jobs, same numbers: the adaptive grids are the ladder's first ones.
+  for (std::size_t k = 0; k < adaptive.size(); ++k) {
+    EXPECT_NEAR(adaptive[k].first, fixed[k].first, 1e-12);
+    EXPECT_DOUBLE_EQ(adaptive[k].second, fixed[k].second);
+  }
+  for (std::size_t n = 4; n < adaptive.size(); ++n) {
+    const auto [verdict, rde] = extrapolate_prefix(dir, fixed, n);
+    EXPECT_TRUE(verdict != "converged" || rde > kTarget) << n << " grids: " << verdict << ", RDE " << rde;
+  }
+  const auto [verdict, rde] = extrapolate_prefix(dir, fixed, adaptive.size());
+  EXPECT_EQ(verdict, "converged");
+  EXPECT_LE(rde, kTarget);
+
+  const double f0_a = std::stod(sql(a, "SELECT f0 FROM v_series")), u_a = std::stod(sql(a, "SELECT finest_u FROM v_series"));
+  const double f0_f = std::stod(sql(f, "SELECT f0 FROM v_series")), u_f = std::stod(sql(f, "SELECT finest_u FROM v_series"));
+  EXPECT_LE(std::abs(f0_a - f0_f), std::max(u_a, u_f)) << "adaptive " << f0_a << " ± " << u_a << ", fixed " << f0_f
+                                                       << " ± " << u_f;
+}
+
+}  // namespace
