@@ -7,7 +7,7 @@ BUILD_TYPE ?= Release
 CTEST_ARGS ?=
 ASAN_BUILD ?= build-asan
 FUZZ_BUILD ?= build-fuzz
-FUZZ_SECONDS ?= 60
+FUZZ_SECONDS ?= 600
 FUZZ_TARGETS = fuzz_json_text fuzz_job fuzz_study fuzz_series fuzz_particle_files fuzz_result
 
 .PHONY: all deps test-deps configure build test test-unit test-sanitize fuzz demo bench bench-quick clean
@@ -53,7 +53,7 @@ fuzz:
 	  rc=0; $(FUZZ_BUILD)/bin/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
 	    -artifact_prefix=$(FUZZ_BUILD)/$$name- -print_final_stats=1 \
 	    $(FUZZ_BUILD)/corpus/$$name fuzz/corpus/$$name >$(FUZZ_BUILD)/$$name.log 2>&1 || rc=$$?; \
-	  grep -E "ERROR|SUMMARY|stat::number_of_executed_units|Test unit written" $(FUZZ_BUILD)/$$name.log | tail -4; \
+	  grep -a -E "ERROR|SUMMARY|stat::number_of_executed_units|Test unit written" $(FUZZ_BUILD)/$$name.log | tail -4; \
 	  [ $$rc -eq 0 ] || { echo "$$t failed (exit $$rc): see $(FUZZ_BUILD)/$$name.log"; exit 1; }; \
 	done
 
