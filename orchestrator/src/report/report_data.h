@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "report/alignment_data.h"
+
 namespace gridfree {
 
 // One job = one grid of one series.
@@ -41,6 +43,7 @@ struct StudyReportData {
   std::vector<std::string> generator_kinds;
   bool export_charts = true;         // PDF/PNG beside every SVG (report/chart_export.h)  // particle generators of the study's cases (report_about.h)
   std::vector<SeriesData> series;
+  std::vector<AlignmentGrid> alignment;  // the study's alignment check, if it has one (report_alignment.h)
 };
 
 }  // namespace gridfree

@@ -9,6 +9,7 @@
 #include "core/version.h"
 #include "extrap/verdict.h"
 #include "report/report.h"
+#include "store/store_alignment.h"
 
 namespace gridfree {
 namespace {
@@ -217,6 +218,8 @@ StudyReportData build_report_data(Store& store, long long study_id) {
     }
     d.series.push_back(std::move(sd));
   }
+  for (auto& a : alignment_values(store.db(), study_id))  // the alignment check, if the study ran it
+    d.alignment.push_back({a.series_id, a.grid_index, a.delta_star, a.cells, std::move(a.dp_star)});
   return d;
 }
 
