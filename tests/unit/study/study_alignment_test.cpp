@@ -8,6 +8,7 @@
 #include "job/job_hash.h"
 #include "study/study.h"
 #include "study/study_alignment.h"
+#include "study/study_plan.h"
 
 namespace gridfree {
 namespace {
@@ -70,6 +71,22 @@ TEST(StudyAlignment, AllGridsWhenNoneListedAndZeroCombinationLeftOut) {
   const auto ex = expand(study_of(doc));
   EXPECT_EQ(ex.alignment.size(), 3u * 2u);  // 3 grids × offsets −1, +1
   EXPECT_TRUE(expand(study_of(quickstart())).alignment.empty());  // default off
+}
+
+TEST(StudyAlignment, ThePlanCountsTheVariants) {
+  json doc = quickstart();
+  const Study plain_study = study_of(doc);
+  const Plan plain = make_plan(plain_study, expand(plain_study), 1, 1);
+  doc["alignment"] = {{"delta_star", {2.0}}, {"ny_offsets", {1}}};
+  const Study s = study_of(doc);
+  const ExpandedStudy ex = expand(s);
+  const Plan plan = make_plan(s, ex, 1, 1);
+  EXPECT_EQ(plan.jobs, plain.jobs + 2);  // one variant per series
+  EXPECT_EQ(plan.rows[0].alignment_jobs, 1u);
+  EXPECT_EQ(plan.rows[0].grids, plain.rows[0].grids);
+  EXPECT_EQ(plan.cells - plain.cells, 2u * static_cast<std::uint64_t>(ex.alignment[0].cells[0]) *
+                                          ex.alignment[0].cells[1] * ex.alignment[0].cells[2]);
+  EXPECT_GT(plan.seconds, plain.seconds);
 }
 
 TEST(StudyAlignment, BadOptionsAreRefusedWithTheirPath) {
