@@ -142,5 +142,13 @@ TEST(StudyTransfer, OneAtATimeVariesTheTransferFromANamedBaseline) {
   EXPECT_EQ(expand(study_of(doc)).series.size(), 6u);
 }
 
+TEST(StudyTransfer, TheShippedExampleComparesThreeTransfersWithTheAlignmentCheck) {
+  const auto ex = expand(parse_study(kSource + "/studies/transfer_alignment.json"));
+  ASSERT_EQ(ex.series.size(), 3u);
+  EXPECT_EQ(ex.jobs.size(), 12u);
+  EXPECT_EQ(ex.alignment.size(), 3u * 2u * 3u);
+  EXPECT_EQ(ex.transfer[1], (TransferColumns{"trilinear", "cell", "exact", "consistent", 0}));
+}
+
 }  // namespace
 }  // namespace gridfree
