@@ -112,6 +112,19 @@ TEST(StoreAlignment, AMissingVariantLeavesTheSpreadEmpty) {
   for (const auto& row : alignment_rows(store.db(), sub.study_id)) EXPECT_FALSE(row.spread.has_value());
 }
 
+TEST(StoreAlignment, DeletingTheStudyRemovesItsVariants) {
+  const Study s = parse_study_document(study_doc(true), kSource + "/studies");
+  const ExpandedStudy ex = expand(s);
+  Store store(temp_db("delete"));
+  store.submit(s, ex);
+  const auto removed = store.delete_study(s.name);
+  ASSERT_TRUE(removed.has_value());
+  EXPECT_EQ(removed->size(), ex.jobs.size() + ex.alignment.size());
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs"), 0);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM alignment_jobs"), 0);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM pragma_foreign_key_check"), 0);
+}
+
 TEST(StoreAlignment, AStudyWithoutTheOptionHasNoVariants) {
   const Study s = parse_study_document(study_doc(false), kSource + "/studies");
   const ExpandedStudy ex = expand(s);
