@@ -69,5 +69,22 @@ TEST(DepositionParse, ContradictionsAreRefusedWithTheirField) {
   EXPECT_TRUE(problems_of({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"pre_deposition", "gaussian"}}).empty());
 }
 
+TEST(DepositionParse, GaussianIntegrationIsAcceptedRecordedAndHasNoSteps) {
+  ProblemList problems;
+  const DepositionSpec d =
+      parse_deposition({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "gaussian"}}, "/d", problems);
+  EXPECT_TRUE(problems.empty());
+  EXPECT_EQ(d.integration, FilterIntegration::kGaussian);
+  const json j = deposition_json(d, {});
+  EXPECT_EQ(j.at("integration"), "gaussian");
+  EXPECT_FALSE(j.contains("steps"));
+  const std::string at = "/numerics/deposition/";
+  EXPECT_TRUE(refused_at({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "gaussian"}, {"steps", 8}}, at + "steps"));
+  const auto p = problems_of({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "heat"}});
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p[0].where, at + "integration");
+  EXPECT_NE(p[0].reason.find("steps, exact, gaussian"), std::string::npos) << p[0].reason;
+}
+
 }  // namespace
 }  // namespace gridfree

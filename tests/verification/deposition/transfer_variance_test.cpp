@@ -18,6 +18,12 @@
 // so the excess kurtosis is (κ4_kernel + 2νΔ²)/σ⁴ — O(Δ²/σ²), and not
 // below 0.05 unless Δ ≲ σ/4.5: no 3-point operator makes a Gaussian at
 // Δ ≈ σ. Eight steps add 12ν²/8, i.e. → 3/8 = 0.375 as Δ → 0.
+//
+// Gaussian integration: the filter is the sampled Gaussian of variance
+// s² = 2ν, whose variance is s²(1 − ε), ε the aliasing term of
+// deposition/gaussian_symbol.h (computed here by its direct sum in space),
+// and whose fourth cumulant is as small as ε: the excess kurtosis is the
+// pre-deposition's alone, −(Δ⁴/120 or Δ⁴/60)/σ⁴, |·| ≤ 1/60 at Δ ≤ σ.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +31,7 @@
 #include <vector>
 
 #include "deposition/filter.h"
+#include "deposition/gaussian_symbol.h"
 #include "deposition/transfer_stencils.h"
 
 namespace gridfree {
@@ -108,6 +115,51 @@ TEST(TransferKernel, ExactFilterKurtosisIsTheCumulantPredictionAndSmallForFineCe
   EXPECT_NEAR(steps8.excess_kurtosis, (2 * nu * h * h + 12 * nu * nu / 8 - std::pow(h, 4) / 60) / (sigma2 * sigma2),
               2e-3);
   EXPECT_GT(steps8.excess_kurtosis, 0.3);
+}
+
+TEST(TransferKernel, SemiDiscreteKurtosisFollowsTheDeltaSquaredLawForBothKernels) {
+  // Excess kurtosis (2νΔ² + κ4,kernel)/σ⁴ = Δ²/σ² − (c + 1/120 or 1/60)Δ⁴/σ⁴:
+  // ≈ 0.91 (centroid) and 0.82 (trilinear) at Δ = σ, far above 0.05.
+  const double fwhm = 0.06, sigma2 = fwhm * fwhm / (8 * std::numbers::ln2);
+  for (PreDeposition kind : {PreDeposition::kCentroid, PreDeposition::kTrilinear})
+    for (double ratio : {0.5, 1.0}) {
+      const double h = ratio * std::sqrt(sigma2), r2 = ratio * ratio;
+      const double c = kernel_variance_per_h2(kind);
+      const double k4_kernel = kind == PreDeposition::kCentroid ? -1.0 / 120 : -1.0 / 60;
+      const KernelMoments k = measure(kind, h, fwhm, FilterIntegration::kExact, 0);
+      EXPECT_NEAR(k.excess_kurtosis, r2 - (c - k4_kernel) * r2 * r2, 2e-3) << pre_deposition_name(kind) << ratio;
+      if (ratio == 1.0) {
+        EXPECT_GT(k.excess_kurtosis, 0.8);
+      }
+    }
+}
+
+TEST(TransferKernel, GaussianIntegrationHasTheTargetVarianceAndNoExcessKurtosis) {
+  const double fwhm = 0.06, sigma2 = fwhm * fwhm / (8 * std::numbers::ln2);
+  for (PreDeposition kind : {PreDeposition::kCentroid, PreDeposition::kTrilinear})
+    for (double ratio : {0.25, 0.5, 1.0, 1.3}) {  // Δ/σ
+      const double h = ratio * std::sqrt(sigma2);
+      const double c = kernel_variance_per_h2(kind);
+      const double s2 = sigma2 - c * h * h;  // 2ν, the sampled Gaussian's nominal variance
+      const double s_over_h = std::sqrt(s2) / h;
+      const double aliasing = s2 - sampled_gaussian_variance_h2(s_over_h) * h * h;  // s²ε ≥ 0
+      const double bound = s2 * 8 * std::numbers::pi * std::numbers::pi * s_over_h * s_over_h *
+                           std::exp(-2 * std::numbers::pi * std::numbers::pi * s_over_h * s_over_h);
+      EXPECT_LE(aliasing, bound + 1e-15 * s2) << ratio;
+      const KernelMoments k = measure(kind, h, fwhm, FilterIntegration::kGaussian, 0);
+      const double midpoint = h * h / (12.0 * 64 * 64) * (kind == PreDeposition::kCentroid ? -1 : 1);
+      // Transforms and round-off only: 1e-9 σ² as above.
+      EXPECT_NEAR(k.variance, sigma2 + midpoint - aliasing, 1e-9 * sigma2) << pre_deposition_name(kind) << ratio;
+      // Within 1 % of σ² while Δ ≤ 1.3σ (ε ≤ 0.8 % there, docs/TRANSFER.md).
+      EXPECT_NEAR(k.variance, sigma2, 0.01 * sigma2);
+      const double k4_kernel = kind == PreDeposition::kCentroid ? -1.0 / 120 : -1.0 / 60;
+      const double r4 = std::pow(ratio, 4);
+      if (ratio <= 1.0) {
+        // The pre-deposition's cumulant alone (midpoint rule O(1/M²): 2e-3 as above).
+        EXPECT_NEAR(k.excess_kurtosis, k4_kernel * r4, 2e-3) << pre_deposition_name(kind) << ratio;
+        EXPECT_LE(std::fabs(k.excess_kurtosis), 0.05) << pre_deposition_name(kind) << ratio;
+      }
+    }
 }
 
 }  // namespace

@@ -103,6 +103,7 @@ TEST(FieldEffect, NumericsFieldsMoveDpStar) {
   expect_dp_moves("/numerics/drag", "hkl");
   expect_dp_moves("/numerics/deposition/fwhm_dp", 8);
   expect_dp_moves("/numerics/deposition/diffusivity", "mfix");
+  expect_dp_moves("/numerics/deposition/integration", "gaussian");
   expect_dp_moves("/numerics/deposition", {{"kind", "centroid"}});
 }
 

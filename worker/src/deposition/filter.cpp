@@ -16,17 +16,21 @@
 // gradients; Σ α V is conserved to round-off (filter_system.h). Axes with
 // ν_i = 0 or one cell are skipped; when none is left the field is returned
 // untouched. Exact integration (FilterIntegration::kExact) replaces the steps
-// by the transform solution of spectral_filter.h.
+// by the transform solution of spectral_filter.h; Gaussian integration
+// (kGaussian) by the sampled Gaussian of variance 2ν_i per axis applied by
+// the same transforms (gaussian_symbol.h).
 #include "deposition/filter.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
 #include "deposition/filter_system.h"
+#include "deposition/gaussian_symbol.h"
 #include "deposition/spectral_filter.h"
 #include "linalg/symmetric_solver.h"
 
@@ -60,6 +64,13 @@ struct DiffusionFilter::Impl {
     if (!active) return;  // nothing diffuses: Δ_i ≥ δ_f (or a single cell) on every axis
     if (settings.integration == FilterIntegration::kExact) {
       spectral = std::make_unique<SpectralFilter>(g, nu);
+      return;
+    }
+    if (settings.integration == FilterIntegration::kGaussian) {
+      std::array<std::vector<double>, 3> factor;
+      for (int a = 0; a < 3; ++a)
+        factor[std::size_t(a)] = gaussian_axis_factors(g.n[a], g.h(a), 2 * nu[std::size_t(a)], g.periodic[a]);
+      spectral = std::make_unique<SpectralFilter>(g, std::move(factor));
       return;
     }
     system.emplace(filter_detail::assemble_filter_step(g, nu, 1.0 / steps));

@@ -5,7 +5,10 @@
 // pre-deposition kernel adds per Δ_i² ("consistent"), or δ_f²/(8√(2 ln 2))
 // ("mfix"), zero flux at non-periodic boundaries, wrap on periodic ones.
 // Backward Euler in `steps` equal pseudo-time steps, or solved exactly in
-// pseudo-time by transforms (spectral_filter.h); conserves Σ α V.
+// pseudo-time by transforms (spectral_filter.h), or — `gaussian` — replaced
+// by the convolution with the sampled Gaussian of variance s_i² = 2ν_i per
+// axis, the kernel the diffusion approximates (gaussian_symbol.h), applied
+// by the same transforms; conserves Σ α V.
 #pragma once
 
 #include <array>
@@ -18,7 +21,9 @@
 namespace gridfree {
 
 enum class FilterDiffusivity { kSeed, kMfix, kConsistent };
-enum class FilterIntegration { kSteps, kExact };
+// The names of the integrations (job field numerics.deposition.integration)
+// are in deposition/filter_integration.h.
+enum class FilterIntegration { kSteps, kExact, kGaussian };
 
 struct FilterSettings {
   double fwhm_cm = 0;                       // δ_f, cm

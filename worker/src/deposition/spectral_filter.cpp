@@ -9,6 +9,7 @@
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 #include <fftw3.h>
 
@@ -48,11 +49,28 @@ struct SpectralFilter::Impl {
   }
 };
 
-SpectralFilter::SpectralFilter(const Grid& grid, const std::array<double, 3>& nu) : impl_(std::make_unique<Impl>()) {
+namespace {
+
+std::array<std::vector<double>, 3> diffusion_factors(const Grid& grid, const std::array<double, 3>& nu) {
+  std::array<std::vector<double>, 3> f;
+  for (int a = 0; a < 3; ++a)
+    f[std::size_t(a)] = spectral_axis_factors(grid.n[a], grid.h(a), nu[std::size_t(a)], grid.periodic[a]);
+  return f;
+}
+
+}  // namespace
+
+SpectralFilter::SpectralFilter(const Grid& grid, const std::array<double, 3>& nu)
+    : SpectralFilter(grid, diffusion_factors(grid, nu)) {}
+
+SpectralFilter::SpectralFilter(const Grid& grid, std::array<std::vector<double>, 3> factor)
+    : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.grid = grid;
   for (int a = 0; a < 3; ++a)
-    m.factor[std::size_t(a)] = spectral_axis_factors(grid.n[a], grid.h(a), nu[std::size_t(a)], grid.periodic[a]);
+    if (factor[std::size_t(a)].size() != std::size_t(grid.n[a]))
+      throw std::invalid_argument("SpectralFilter: one factor per mode of each axis");
+  m.factor = std::move(factor);
   const int dims[3] = {grid.n[2], grid.n[1], grid.n[0]};
   fftw_r2r_kind fwd[3], bwd[3];
   for (int a = 0; a < 3; ++a) {

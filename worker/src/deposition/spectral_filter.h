@@ -15,6 +15,9 @@
 // thread, so the result is deterministic and independent of the thread
 // count. The k = 0 factor is exactly 1, so Σ α is conserved to round-off;
 // the cost is O(N log N) whatever ν_i τ/Δ_i².
+//
+// The same transforms apply any other per-axis multiplier, e.g. the sampled
+// Gaussian's (gaussian_symbol.h): FilterIntegration::kGaussian.
 #pragma once
 
 #include <array>
@@ -27,7 +30,11 @@ namespace gridfree {
 
 class SpectralFilter {
  public:
+  // The semi-discrete diffusion exp(Σ_i ν_i δ²_i) (spectral_axis_factors).
   SpectralFilter(const Grid& grid, const std::array<double, 3>& nu);
+  // Any separable multiplier: factor[a][k] for mode k of axis a, in FFTW's
+  // order and including the round-trip scale 1/n (periodic) or 1/(2n) (wall).
+  SpectralFilter(const Grid& grid, std::array<std::vector<double>, 3> factor);
   ~SpectralFilter();
   SpectralFilter(const SpectralFilter&) = delete;
   SpectralFilter& operator=(const SpectralFilter&) = delete;

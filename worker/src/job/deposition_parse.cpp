@@ -9,18 +9,20 @@
 //   sampling        cell | trilinear | gaussian                  (default trilinear; gaussian
 //                   pre-deposition defaults to gaussian)
 //   diffusivity     seed | consistent | mfix                     (default consistent)
-//   integration     steps | exact                                (default exact)
+//   integration     steps | exact | gaussian                     (default exact;
+//                   deposition/filter_integration.h holds the names)
 //   steps           backward-Euler steps, integration "steps" only (default 8)
 //   truncation_sigmas  gaussian only (default 4)
 //
 // Refused (each with its JSON pointer): a transfer field with kind
 // "centroid"; filter fields (diffusivity, integration, steps) with the
-// gaussian pre-deposition, which is not filtered; steps with exact
-// integration; truncation_sigmas without the gaussian kernel; gaussian
+// gaussian pre-deposition, which is not filtered; steps with exact or
+// gaussian integration; truncation_sigmas without the gaussian kernel; gaussian
 // sampling without the gaussian kernel and trilinear sampling with it.
 #include <array>
 
 #include "core/json_fields.h"
+#include "deposition/filter_integration.h"
 #include "job/job_spec.h"
 
 namespace gridfree {
@@ -111,13 +113,20 @@ DepositionSpec parse_deposition(const nlohmann::json& dep, const std::string& at
       dep, "diffusivity", at, problems,
       {{{"seed", FilterDiffusivity::kSeed}, {"consistent", FilterDiffusivity::kConsistent}, {"mfix", FilterDiffusivity::kMfix}}},
       FilterDiffusivity::kConsistent);
-  d.integration = read_enum<FilterIntegration, 2>(
-      dep, "integration", at, problems, {{{"steps", FilterIntegration::kSteps}, {"exact", FilterIntegration::kExact}}},
-      FilterIntegration::kExact);
+  if (dep.contains("integration")) {
+    const std::string v = read_string(dep, "integration", at, problems);
+    if (const auto integration = parse_filter_integration(v)) {
+      d.integration = *integration;
+    } else if (!v.empty()) {
+      std::string all;
+      for (const auto& n : filter_integration_names()) all += (all.empty() ? "" : ", ") + std::string(n.name);
+      problems.add(child_pointer(at, "integration"), "'" + v + "' is not one of " + all);
+    }
+  }
   if (dep.contains("steps")) {
     const std::int64_t steps = read_integer(dep, "steps", at, problems);
     if (d.integration != FilterIntegration::kSteps)
-      problems.add(child_pointer(at, "steps"), "only with integration 'steps' (exact integration has no steps)");
+      problems.add(child_pointer(at, "steps"), "only with integration 'steps' (exact and gaussian integration have no steps)");
     else if (steps < 1 || steps > 100000) problems.add(child_pointer(at, "steps"), "must be from 1 to 100000");
     else d.steps = static_cast<int>(steps);
   }
@@ -148,7 +157,7 @@ nlohmann::json deposition_json(const DepositionSpec& d, const nlohmann::json& gi
     return j;
   }
   j["diffusivity"] = std::string(filter_diffusivity_name(d.diffusivity));
-  j["integration"] = d.integration == FilterIntegration::kExact ? "exact" : "steps";
+  j["integration"] = std::string(filter_integration_name(d.integration));
   if (d.integration == FilterIntegration::kSteps) j["steps"] = d.steps;
   return j;
 }
