@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 
+#include "deposition/filter_integration.h"
 #include "job/job_spec.h"
 
 namespace gridfree {
@@ -111,9 +112,9 @@ json deposition_document(const Study& s, const std::string& level, double fwhm_d
     } else {
       dep["kind"] = "diffusion";
       for (auto it = t->second.begin(); it != t->second.end(); ++it) dep[it.key()] = it.value();
-      // A level that chooses exact integration drops the study's step count
-      // (the worker refuses steps with exact integration).
-      if (t->second.contains("integration") && t->second["integration"] == "exact" && !t->second.contains("steps"))
+      // A level that chooses an integration without steps drops the study's
+      // step count (the worker refuses steps with any other integration).
+      if (t->second.contains("integration") && t->second["integration"] != "steps" && !t->second.contains("steps"))
         dep.erase("steps");
     }
   } else if (level == "fm18" || level == "mfix") {
@@ -136,7 +137,7 @@ TransferColumns transfer_columns(const json& deposition) {
   c.sampling = std::string(sampling_name(d.sampling));
   const bool filtered = d.kind == DepositionKind::kDiffusion && d.pre_deposition != PreDeposition::kGaussian;
   if (filtered) {
-    c.integration = d.integration == FilterIntegration::kExact ? "exact" : "steps";
+    c.integration = std::string(filter_integration_name(d.integration));
     c.diffusivity = std::string(filter_diffusivity_name(d.diffusivity));
     if (d.integration == FilterIntegration::kSteps) c.steps = d.steps;
   }

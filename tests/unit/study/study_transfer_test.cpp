@@ -67,6 +67,14 @@ TEST(StudyTransfer, ObjectLevelsAreMergedOverTheStudysDeposition) {
   EXPECT_EQ(dep["diffusivity"], "mfix");  // from the study
   EXPECT_EQ(dep["steps"], 8);             // from the level
   EXPECT_EQ(ex.transfer.front(), (TransferColumns{"trilinear", "trilinear", "steps", "mfix", 8}));
+  // A level with an integration that has no steps drops the study's step count.
+  doc["numerics"]["deposition"] = {{"integration", "steps"}, {"steps", 16}};
+  doc["factors"]["deposition"] = {json{{"name", "g"}, {"integration", "gaussian"}},
+                                  json{{"name", "x"}, {"integration", "exact"}}};
+  const auto ex2 = expand(study_of(doc));
+  EXPECT_FALSE(ex2.jobs.front().doc["numerics"]["deposition"].contains("steps"));
+  EXPECT_EQ(ex2.transfer[0], (TransferColumns{"trilinear", "trilinear", "gaussian", "consistent", 0}));
+  EXPECT_EQ(ex2.transfer[1], (TransferColumns{"trilinear", "trilinear", "exact", "consistent", 0}));
 }
 
 TEST(StudyTransfer, NameLevelsWriteTheJobsAsBefore) {
