@@ -60,6 +60,10 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
     files.csv.push_back(out_dir / t->file);
     write_file_atomically(files.csv.back(), to_csv(t->table));
   }
+  if (!content.alignment.empty()) {  // only for a study that ran the alignment check
+    files.csv.push_back(out_dir / content.alignment_table.file);
+    write_file_atomically(files.csv.back(), to_csv(content.alignment_table.table));
+  }
   const auto converter = data.export_charts ? find_svg_converter() : std::filesystem::path();
   if (data.export_charts && converter.empty()) {
     content.export_note = "PDF and PNG copies of the charts were not written: rsvg-convert is not installed "

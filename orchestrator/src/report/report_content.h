@@ -8,6 +8,7 @@
 
 #include "report/differences.h"
 #include "report/extrapolator.h"
+#include "report/report_alignment.h"
 #include "report/report_charts.h"
 #include "report/report_data.h"
 #include "report/series_summary.h"
@@ -27,6 +28,8 @@ struct ReportContent {
   std::vector<SeriesDifference> differences;
   NamedTable series_table, differences_table, cost_table, gci_table, grids_table, failures_table;
   std::vector<NamedChart> charts;
+  std::vector<AlignmentLine> alignment;    // empty unless the study ran the alignment check
+  NamedTable alignment_table;
   std::string export_note;                 // why charts have no PDF/PNG copies, if they have none
 
   // Counts over all grids of all series.

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "report/alignment_data.h"
+
 namespace gridfree {
 
 // One job = one grid of one series.
@@ -42,6 +44,7 @@ struct StudyReportData {
   bool export_charts = true;         // PDF/PNG beside every SVG (report/chart_export.h)  // particle generators of the study's cases (report_about.h)
   std::vector<SeriesData> series;
   std::vector<std::string> adaptive_decisions;  // adaptive series: every decision in order (report/adaptive_section.h)
+  std::vector<AlignmentGrid> alignment;  // the study's alignment check, if it has one (report_alignment.h)
 };
 
 }  // namespace gridfree

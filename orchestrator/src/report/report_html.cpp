@@ -95,6 +95,7 @@ std::string contents(const ReportContent& c) {
            {"grids", c.grids_table.title}})
     out += "<li><a href=\"#" + id + "\">" + xml_escape(title) + "</a></li>\n";
   if (!about_sections(c.data.generator_kinds).empty()) out += "<li><a href=\"#about\">About this case</a></li>\n";
+  if (!c.alignment.empty()) out += "<li><a href=\"#alignment\">" + xml_escape(c.alignment_table.title) + "</a></li>\n";
   out += "</ul>\n<strong>Files</strong>\n<ul>\n";
   for (const NamedTable* t :
        {&c.series_table, &c.differences_table, &c.cost_table, &c.gci_table, &c.failures_table, &c.grids_table})
@@ -147,6 +148,7 @@ std::string render_html(const ReportContent& c) {
     if (per_series(chart)) out += figure(chart);
   }
   out += "</div>\n";
+  if (!c.alignment.empty()) out += table_section(c.alignment_table, "alignment", "");
   out += table_section(c.gci_table, "gci", "No series has three converged grids yet.");
   out += table_section(c.failures_table, "failures", "None: every finished grid converged.");
   out += table_section(c.grids_table, "grids", "No grids.");

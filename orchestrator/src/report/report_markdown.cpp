@@ -61,6 +61,7 @@ std::string render_markdown(const ReportContent& c) {
   for (const auto& chart : c.charts) {
     if (chart.file.rfind("fig1_", 0) == 0 || chart.file.rfind("gci_", 0) == 0) out += chart_link(chart);
   }
+  if (!c.alignment.empty()) out += table_section(c.alignment_table, "");
   out += table_section(c.gci_table, "No series has three converged grids yet.");
   out += table_section(c.failures_table, "None: every finished grid converged.");
   out += table_section(c.grids_table, "No grids.");

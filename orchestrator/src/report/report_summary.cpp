@@ -32,6 +32,7 @@ std::vector<std::string> series_warnings(const ReportContent& c) {
     const std::string note = s.note();
     if (!note.empty()) out.push_back(s.label + ": " + note);
   }
+  for (auto& w : alignment_warnings(c.alignment)) out.push_back(std::move(w));
   return out;
 }
 
@@ -59,6 +60,7 @@ std::vector<VerdictItem> verdict_items(const ReportContent& c) {
 }
 
 std::string reading_note(const std::string& section) {
+  if (section == "alignment.csv") return alignment_reading_note();
   if (section == "series.csv") {
     return "f0 is the extrapolated (grid-free) DP*. The power law f0 + c·h^p is used when its exponent is "
            "found inside the accepted range, otherwise the mixed-order fit f0 + c1·h + c2·h². σ_RE is the "

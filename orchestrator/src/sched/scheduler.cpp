@@ -26,13 +26,15 @@ struct InFlight {
 
 std::string job_label(Store& store, const ClaimedJob& job) {
   auto st = store.db().prepare(
-      "SELECT se.case_name, se.convection, se.fwhm_dp, se.drag, se.deposition FROM study_jobs sj "
-      "JOIN series se ON se.id = sj.series_id WHERE sj.job_id = ? AND sj.study_id = ? LIMIT 1");
+      "SELECT se.case_name, se.convection, se.fwhm_dp, se.drag, se.deposition, sj.alignment_only FROM study_jobs sj "
+      "JOIN series se ON se.id = sj.series_id WHERE sj.job_id = ? AND sj.study_id = ? "
+      "ORDER BY sj.alignment_only LIMIT 1");
   st.bind_all(job.job_id, job.study_id);
   std::string label = job.job_hash.substr(0, 12);
   if (st.step()) {
     SeriesKey k{st.as_text(0), st.as_text(1), st.as_double(2), st.as_text(3), st.as_text(4)};
     label = k.label();
+    if (st.as_int(5) != 0) label += " alignment";  // a variant of the alignment check
   }
   char cells[64];
   std::snprintf(cells, sizeof cells, " %dx%dx%d", job.cells[0], job.cells[1], job.cells[2]);

@@ -10,6 +10,7 @@
 #include "extrap/verdict.h"
 #include "report/report.h"
 #include "sched/adaptive_series.h"
+#include "store/store_alignment.h"
 
 namespace gridfree {
 namespace {
@@ -220,6 +221,8 @@ StudyReportData build_report_data(Store& store, long long study_id) {
     }
     d.series.push_back(std::move(sd));
   }
+  for (auto& a : alignment_values(store.db(), study_id))  // the alignment check, if the study ran it
+    d.alignment.push_back({a.series_id, a.grid_index, a.delta_star, a.cells, std::move(a.dp_star)});
   return d;
 }
 

@@ -1,11 +1,15 @@
-// Schema version 5 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
-// state; 4: series verdicts; 5: adaptive series). Status words (docs/INTERFACE.md §5):
+// Schema version 7 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
+// state; 4: series verdicts; 5: series transfer columns; 6: alignment check;
+// 7: adaptive series). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
 // so a restart can tell a live claim from a stale one.
 #include "store/schema.h"
 
+#include "store/schema_steps.h"
+
+#include <algorithm>
 #include <string>
 
 namespace gridfree {
@@ -263,15 +267,30 @@ LEFT JOIN uncertainties fu ON fu.series_id = se.id AND fu.delta_star =
   (SELECT MIN(m.delta_star) FROM uncertainties m WHERE m.series_id = se.id);
 )sql";
 
-// Step 5 — adaptive grid series (sched/adaptive_series.h): a series run to a
+// Step 7 — adaptive grid series (sched/adaptive_series.h): a series run to a
 // target RDE is 'refining' until it stops, then 'target_met' or
 // 'target_not_reached'; adaptive_note is the decision's sentence. NULL for
 // series with a grid list.
-constexpr const char* kV5AdaptiveSeries = R"sql(
+constexpr const char* kV7AdaptiveSeries = R"sql(
 ALTER TABLE series ADD COLUMN adaptive_status TEXT
   CHECK (adaptive_status IS NULL OR adaptive_status IN ('refining','target_met','target_not_reached'));
 ALTER TABLE series ADD COLUMN adaptive_note TEXT;
 )sql";
+
+// Foreign keys off for the migration's transaction, on again afterwards
+// (also when a step throws).
+struct ForeignKeysOff {
+  Database& db;
+  explicit ForeignKeysOff(Database& d) : db(d) { db.exec("PRAGMA foreign_keys = OFF"); }
+  ~ForeignKeysOff() {
+    try {
+      db.exec("PRAGMA foreign_keys = ON");
+    } catch (...) {  // a destructor must not throw; the connection is unusable anyway then
+    }
+  }
+  ForeignKeysOff(const ForeignKeysOff&) = delete;
+  ForeignKeysOff& operator=(const ForeignKeysOff&) = delete;
+};
 
 }  // namespace
 
@@ -281,23 +300,32 @@ int schema_version(Database& db) {
   return static_cast<int>(st.as_int(0));
 }
 
-void migrate(Database& db) {
+void migrate(Database& db, int target) {
   {
     auto st = db.prepare("PRAGMA journal_mode = WAL");
     st.step();
   }
   db.exec("PRAGMA synchronous = NORMAL");
+  // Step 5 rebuilds the series table: dropping it must not cascade to the
+  // rows that reference it (the pragma is a no-op inside a transaction).
+  ForeignKeysOff fk_off(db);  // declared first: restored after the transaction ends
   Transaction tx(db);
   const int v = schema_version(db);
   if (v > kSchemaVersion)
     throw SqliteError("database schema version " + std::to_string(v) + " is newer than this gridfree (" +
                           std::to_string(kSchemaVersion) + ")", SQLITE_ERROR);
-  if (v < 1) db.exec(kV1);
-  if (v < 2) db.exec(kV2NominalDeltaStar);
-  if (v < 3) db.exec(kV3SlurmState);
-  if (v < 4) db.exec(kV4SeriesVerdict);
-  if (v < 5) db.exec(kV5AdaptiveSeries);
-  db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
+  if (v < 1 && target >= 1) db.exec(kV1);
+  if (v < 2 && target >= 2) db.exec(kV2NominalDeltaStar);
+  if (v < 3 && target >= 3) db.exec(kV3SlurmState);
+  if (v < 4 && target >= 4) db.exec(kV4SeriesVerdict);
+  if (v < 5 && target >= 5) migrate_series_transfer(db);  // transfer columns (schema_transfer.cpp)
+  if (v < 6 && target >= 6) migrate_alignment(db);        // alignment check (schema_alignment.cpp)
+  if (v < 7 && target >= 7) db.exec(kV7AdaptiveSeries);
+  if (v < 5 && target >= 5) {
+    auto fk = db.prepare("PRAGMA foreign_key_check");
+    if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);
+  }
+  db.exec("PRAGMA user_version = " + std::to_string(std::max(v, target)));
   tx.commit();
 }
 

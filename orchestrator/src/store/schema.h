@@ -6,11 +6,12 @@
 
 namespace gridfree {
 
-inline constexpr int kSchemaVersion = 5;
+inline constexpr int kSchemaVersion = 7;
 
 // Brings the database up to kSchemaVersion (WAL mode, tables, view) in one
 // transaction per step. Refuses a database newer than this program.
-void migrate(Database& db);
+// `target` below kSchemaVersion stops earlier (tests build old databases).
+void migrate(Database& db, int target = kSchemaVersion);
 
 int schema_version(Database& db);
 

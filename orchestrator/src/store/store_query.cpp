@@ -38,7 +38,7 @@ std::vector<SeriesInfo> Store::series_ready(long long study_id) {
   auto st = db_.prepare(std::string(kSeriesColumns) +
                         "WHERE study_id = ? AND status IN ('queued','running') AND NOT EXISTS ("
                         " SELECT 1 FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id"
-                        " WHERE sj.series_id = series.id AND j.status IN ('queued','running')) "
+                        " WHERE sj.series_id = series.id AND sj.alignment_only = 0 AND j.status IN ('queued','running')) "
                         "ORDER BY position");
   st.bind_all(study_id);
   while (st.step()) out.push_back(read_series(st));
@@ -52,7 +52,7 @@ std::vector<SeriesPoint> Store::series_points(long long series_id) {
       "COALESCE(r.delta_star, j.delta_star), j.nx, j.ny, j.nz, r.dp_star, COALESCE(r.iterations, 0), "
       "COALESCE(r.wall_s, 0), COALESCE(r.cpu_s, 0), COALESCE(r.peak_rss_mb, 0) "
       "FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id LEFT JOIN results r ON r.job_id = j.id "
-      "WHERE sj.series_id = ? ORDER BY sj.grid_index");
+      "WHERE sj.series_id = ? AND sj.alignment_only = 0 ORDER BY sj.grid_index");
   st.bind_all(series_id);
   while (st.step()) {
     SeriesPoint p;

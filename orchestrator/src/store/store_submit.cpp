@@ -2,6 +2,7 @@
 #include "core/input_error.h"
 #include "store/schema.h"
 #include "store/store.h"
+#include "store/store_alignment.h"
 
 namespace gridfree {
 
@@ -115,6 +116,9 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     link.bind_all(out.study_id, job_id, series_ids.at(job.series), static_cast<long long>(job.grid),
                   job.delta_star_nominal).run();
   }
+  store_series_transfer(db_, series_ids, expanded);                                 // step 5 columns
+  out.jobs_new += store_alignment_jobs(db_, out.study_id, series_ids, expanded);  // alignment variants
+  out.jobs_total += expanded.alignment.size();
   if (out.replaced) out.jobs_removed = remove_orphan_jobs();
   db_.prepare("INSERT INTO events(study_id, kind, message) VALUES (?, 'submit', ?)")
       .bind_all(out.study_id, std::to_string(out.jobs_total) + " jobs, " + std::to_string(out.jobs_new) +

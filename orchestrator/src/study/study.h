@@ -27,10 +27,17 @@ struct SeriesKey {
   std::string convection = "superbee";
   double fwhm_dp = 6;
   std::string drag = "bvk";
-  std::string deposition = "diffusion";  // "diffusion" | "centroid" | a transfer preset "fm18" | "mfix"
+  std::string deposition = "diffusion";  // "diffusion" | "centroid" | a preset "fm18" | "mfix" | a transfer level's name
 
   auto operator<=>(const SeriesKey&) const = default;
   std::string label() const;  // "PC1 superbee fwhm6 bvk" (+ " centroid")
+};
+
+// The expanded transfer of a series (study_transfer.h): series table columns.
+struct TransferColumns {
+  std::string pre_deposition, sampling, integration, diffusivity;  // "" = does not apply
+  int steps = 0;                                                   // integration "steps" only
+  bool operator==(const TransferColumns&) const = default;
 };
 
 struct StudyFactors {
@@ -50,18 +57,27 @@ struct ExtrapolationSettings {
   std::string method = "fm";  // fm | eh14
 };
 
+// The alignment check of a study (study_alignment.h): which grids are
+// re-solved with which cell-count offsets.
+struct AlignmentOption {
+  std::vector<std::size_t> grids;            // indices into the study's grid list
+  std::array<std::vector<int>, 3> offsets;   // nx, ny, nz offsets ({0} when not given)
+};
+
 struct Study {
   std::string name;
   nlohmann::json definition;        // the study document as read
   std::filesystem::path base_dir;   // folder of the study file
   std::vector<StudyCase> cases;     // in file order
   StudyFactors factors;             // levels as given (missing factor = its default)
+  std::map<std::string, nlohmann::json> transfer_levels;  // object deposition levels by name (study_transfer.h)
   std::optional<SeriesKey> baseline;  // set for one_at_a_time designs
   std::vector<double> grid_delta_star;            // grids: {"delta_star": [...]}
   std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}
   std::optional<AdaptiveGrids> adaptive_grids;    // or grids as a target (grid_delta_star = its ladder)
   nlohmann::json numerics = nlohmann::json::object();  // merged into every job
   ExtrapolationSettings extrapolation;
+  std::optional<AlignmentOption> alignment;  // off unless the study asks
 
   const StudyCase* find_case(const std::string& name) const;
   std::string design_description() const;  // "factorial" or "one_at_a_time (baseline ...)"
@@ -77,9 +93,20 @@ struct StudyJob {
   std::string hash;                // job_hash(doc)
 };
 
+// A re-aligned variant of a series' grid (not part of its extrapolation).
+struct AlignmentJob {
+  std::size_t series = 0, grid = 0;
+  std::array<int, 3> offsets{}, cells{};
+  double delta_star = 0;
+  nlohmann::json doc;
+  std::string hash, base_hash;     // this job, and the grid's own job
+};
+
 struct ExpandedStudy {
   std::vector<SeriesKey> series;
+  std::vector<TransferColumns> transfer;  // per series, its expanded transfer
   std::vector<StudyJob> jobs;      // series-major, grids in the study's order
+  std::vector<AlignmentJob> alignment;  // empty unless the study has "alignment"
 };
 
 // Reads, validates and parses a study file. Throws InputError with every

@@ -13,6 +13,8 @@
 #include "grid/grid.h"
 #include "job/job_hash.h"
 #include "study/study.h"
+#include "study/study_alignment.h"
+#include "study/study_transfer.h"
 
 namespace gridfree {
 
@@ -74,17 +76,7 @@ nlohmann::json make_job_document(const Study& s, const SeriesKey& key, const std
   numerics["grid"] = {{"cells", {cells[0], cells[1], cells[2]}}};
   numerics["convection"] = key.convection;
   numerics["drag"] = key.drag;
-  nlohmann::json dep = numerics.contains("deposition") && numerics["deposition"].is_object()
-                           ? numerics["deposition"] : nlohmann::json::object();
-  if (key.deposition == "fm18" || key.deposition == "mfix") {
-    dep = {{"preset", key.deposition}};  // a preset fixes every transfer field (docs/TRANSFER.md)
-  } else if (key.deposition == "centroid") {
-    dep = {{"kind", "centroid"}};  // no filter, cell values: the transfer fields do not apply
-  } else {
-    dep["kind"] = key.deposition;
-  }
-  dep["fwhm_dp"] = key.fwhm_dp;
-  numerics["deposition"] = dep;
+  numerics["deposition"] = deposition_document(s, key.deposition, key.fwhm_dp);
   return {{"schema", "gridfree/job/1"},
           {"case", c != nullptr ? c->doc : nlohmann::json::object()},
           {"numerics", numerics}};
@@ -96,7 +88,11 @@ ExpandedStudy expand(const Study& s) {
   for (std::size_t si = 0; si < out.series.size(); ++si) {
     const auto& key = out.series[si];
     const StudyCase* c = s.find_case(key.case_name);
-    if (c == nullptr) continue;
+    if (c == nullptr) {
+      out.transfer.emplace_back();
+      continue;
+    }
+    out.transfer.push_back(transfer_columns(deposition_document(s, key.deposition, key.fwhm_dp)));
     const auto grids = grids_for_case(s, *c);
     std::set<std::string> hashes;
     for (std::size_t g = 0; g < grids.size(); ++g) {
@@ -112,6 +108,7 @@ ExpandedStudy expand(const Study& s) {
       if (hashes.insert(job.hash).second) out.jobs.push_back(std::move(job));
     }
   }
+  expand_alignment(s, out);  // re-aligned variants, when the study asks (study_alignment.cpp)
   return out;
 }
 

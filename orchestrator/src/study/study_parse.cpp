@@ -13,7 +13,9 @@
 #include "schemes/limiter.h"
 #include "study/case_extends.h"
 #include "study/study.h"
+#include "study/study_alignment.h"
 #include "study/study_plan.h"
+#include "study/study_transfer.h"
 
 namespace gridfree {
 namespace {
@@ -126,10 +128,6 @@ void check_names(const std::vector<std::string>& levels, const std::string& at, 
 
 bool known_convection(const std::string& n) { return limiter_from_name(n).has_value(); }
 bool known_drag(const std::string& n) { return drag_law_from_name(n).has_value(); }
-// "fm18" and "mfix" are transfer presets (docs/TRANSFER.md): diffusion deposition with the preset's fields.
-bool known_deposition(const std::string& n) {
-  return n == "diffusion" || n == "centroid" || n == "fm18" || n == "mfix";
-}
 
 void parse_factors(const json& doc, Study& s, ProblemList& problems) {
   auto f = doc.find("factors");
@@ -147,8 +145,7 @@ void parse_factors(const json& doc, Study& s, ProblemList& problems) {
       s.factors.drag = string_levels(*it, at, problems);
       check_names(s.factors.drag, at, problems, known_drag, drag_law_names());
     } else if (it.key() == "deposition") {
-      s.factors.deposition = string_levels(*it, at, problems);
-      check_names(s.factors.deposition, at, problems, known_deposition, "diffusion, centroid, fm18, mfix");
+      parse_deposition_levels(*it, at, s, problems);  // names or transfer objects (study_transfer.cpp)
     } else if (it.key() == "fwhm_dp") {
       if (!it->is_array()) {
         add_once(problems, at, "must be an array of numbers");
@@ -433,7 +430,9 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   parse_factors(doc, s, problems);
   default_factors(s);
   parse_design(doc, s, problems);
+  check_deposition_levels(s, problems);
   parse_grids(doc, s, problems);
+  parse_alignment(doc, s, problems);  // study_alignment.cpp
   parse_extrapolation(doc, s, problems);
   if (problems.empty()) check_grids(s, problems);
   if (problems.empty()) check_jobs(s, problems);

@@ -46,7 +46,16 @@ Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, i
     row.memory_bytes = std::max(row.memory_bytes, estimated_memory_bytes(job.cells));
     row.seconds += estimated_seconds(job.cells, threads);
   }
-  plan.jobs = expanded.jobs.size();
+  for (const auto& a : expanded.alignment) {  // alignment-check variants: solved like the grids
+    auto& row = plan.rows[a.series];
+    const auto n = static_cast<std::uint64_t>(cell_count(a.cells));
+    row.alignment_jobs += 1;
+    row.cells += n;
+    row.largest_cells = std::max(row.largest_cells, n);
+    row.memory_bytes = std::max(row.memory_bytes, estimated_memory_bytes(a.cells));
+    row.seconds += estimated_seconds(a.cells, threads);
+  }
+  plan.jobs = expanded.jobs.size() + expanded.alignment.size();
   for (const auto& row : plan.rows) {
     plan.cells += row.cells;
     plan.max_memory_bytes = std::max(plan.max_memory_bytes, row.memory_bytes);
@@ -69,6 +78,7 @@ nlohmann::json plan_to_json(const Plan& plan) {
   for (const auto& r : plan.rows)
     rows.push_back({{"series", r.series},
                     {"grids", r.grids},
+                    {"alignment_jobs", r.alignment_jobs},
                     {"cells", r.cells},
                     {"largest_cells", r.largest_cells},
                     {"memory_bytes", r.memory_bytes},

@@ -40,6 +40,7 @@ double estimated_seconds(const std::array<int, 3>& cells, int threads);
 struct PlanRow {
   std::string series;            // label
   std::size_t grids = 0;
+  std::size_t alignment_jobs = 0;  // alignment-check variants (counted in cells, memory, seconds)
   std::uint64_t cells = 0;       // summed over the series' grids
   std::uint64_t largest_cells = 0;
   double memory_bytes = 0;       // of the largest grid

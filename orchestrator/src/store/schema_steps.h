@@ -1,0 +1,16 @@
+// Migration steps kept in their own files (schema.cpp runs them in order).
+#pragma once
+
+#include "store/sqlite.h"
+
+namespace gridfree {
+
+// Step 5 (schema_transfer.cpp): the series table rebuilt with its transfer
+// columns in the UNIQUE key. Needs foreign keys off (migrate() does that).
+void migrate_series_transfer(Database& db);
+
+// Step 6 (schema_alignment.cpp): alignment variants of a series' grids,
+// study_jobs.alignment_only, v_alignment; v_results without the variants.
+void migrate_alignment(Database& db);
+
+}  // namespace gridfree
