@@ -158,6 +158,9 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       auto job = claim_within_budget(store, o.study, o.owner, budget_use(running), policy, reservation);
       if (!job) break;
       InFlight f{*job, job_label(store, *job), job_memory_estimate_bytes(job->cells)};
+      if (o.memory_budget_bytes > 0 && f.memory_bytes > o.memory_budget_bytes)
+        spdlog::warn("{}: its estimated memory {} exceeds the memory budget {}; it runs alone", f.label,
+                     memory_text(f.memory_bytes), memory_text(o.memory_budget_bytes));
       JobLaunch launch;
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
