@@ -163,4 +163,32 @@ TEST(CheckpointCli, CorruptOrForeignCheckpointIsIgnoredWithAWarning) {
   EXPECT_FALSE(read(dir / "corrupt.json")["extra"].contains("resumed_from_iteration"));
 }
 
+// `gridfree run` deletes a job's checkpoint once its result is stored (fake
+// worker mode ckok: leaves checkpoint.bin behind and converges).
+TEST(CheckpointCli, RunRemovesCheckpointsOfStoredResults) {
+  const fs::path dir = gridfree::test_support::fresh_scratch_dir("checkpoint_cli", "cleanup");
+  const fs::path source = GRIDFREE_SOURCE_DIR;
+  std::ifstream in(source / "studies/quickstart.json");
+  auto doc = nlohmann::json::parse(in);
+  doc["name"] = "cleanup";
+  const auto pc1 = doc["cases"]["PC1"];
+  doc["cases"] = {{"ckok", pc1}};
+  doc["factors"] = {{"convection", {"superbee"}}, {"fwhm_dp", {6}}, {"drag", {"bvk"}}};
+  doc["design"] = "factorial";
+  doc["grids"] = {{"delta_star", {5.0, 4.0, 3.3, 2.5}}};
+  write(dir / "cleanup.json", doc);
+  const auto r = gridfree::test_support::run_command(
+      "cd '" + dir.string() + "' && GRIDFREE_WORKER='" + (source / "tests/fixtures/fake_worker.sh").string() + "' '" +
+          std::string(GRIDFREE_BIN_DIR) + "/gridfree' run cleanup.json -j 2",
+      dir / "run_stderr.txt");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  int results = 0, checkpoints = 0;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "gridfree.sqlite.runs")) {
+    results += e.path().filename() == "result.json";
+    checkpoints += e.path().filename() == "checkpoint.bin";
+  }
+  EXPECT_EQ(results, 4);
+  EXPECT_EQ(checkpoints, 0);
+}
+
 }  // namespace
