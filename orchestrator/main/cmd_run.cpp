@@ -15,7 +15,9 @@
 #include "executor_flags.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
+#include "job/memory_estimate.h"
 #include "sched/adopt.h"
+#include "sched/memory_budget.h"
 #include "sched/series_finish.h"
 #include "sched/stop_signal.h"
 
@@ -30,7 +32,24 @@ struct RunOptions {
   double timeout_s = kDerivedTimeout;
   std::string out;
   bool replace = false;
+  std::string memory_budget;  // "" = MemAvailable
 };
+
+// The local executor's memory budget (sched/memory_budget.h), logged with
+// its source; none under Slurm (the cluster places the jobs).
+void apply_memory_budget(SchedulerOptions& options, const ExecutorFlags& executor, const std::string& flag) {
+  if (executor.kind == "slurm") {
+    if (!flag.empty()) throw InputError("--memory-budget", "applies to the local executor only (Slurm gets --mem)");
+    return;
+  }
+  const MemoryBudget budget = resolve_memory_budget(flag);
+  options.memory_budget_bytes = budget.bytes;
+  spdlog::info("memory budget {} ({}): a job starts when the estimates of the running jobs and its own fit",
+               memory_text(budget.bytes), budget.source);
+}
+
+constexpr const char* kMemoryBudgetHelp =
+    "memory the running jobs' estimates may add up to, e.g. 12G (default: MemAvailable at start; local executor)";
 
 SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy& ex, bool replace) {
   const SubmitResult r = store.submit(study, ex, replace);
@@ -52,6 +71,7 @@ int run_study(const RunOptions& ro) {
   const Study study = parse_study(ro.study_file);
   const ExpandedStudy ex = expand(study);
   auto options = scheduler_options(ro.db, ro.jobs, ro.timeout_s, ro.out);
+  apply_memory_budget(options, ro.executor, ro.memory_budget);
   const bool has_slurm = study.definition.is_object() && study.definition.contains("slurm");
   if (has_slurm && ro.executor.kind != "slurm")
     throw InputError("/slurm", "Slurm settings need --executor slurm");
@@ -98,6 +118,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   add_executor_flags(sub, ro->executor);
   sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->add_option("--out", ro->out, "report folder (default reports/<study>)");
+  sub->add_option("--memory-budget", ro->memory_budget, kMemoryBudgetHelp);
   sub->add_flag("--replace", ro->replace,
                 "replace a stored study of the same name whose definition differs (finished jobs are reused)");
   sub->callback([ro, &exit_code] { exit_code = run_study(*ro); });
@@ -129,12 +150,15 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
   auto jobs = std::make_shared<int>(default_jobs());
   auto executor_flags = std::make_shared<ExecutorFlags>();
   auto timeout = std::make_shared<double>(kDerivedTimeout);
+  auto memory_budget = std::make_shared<std::string>();
   sub->add_option("--db", *db, "SQLite database")->capture_default_str();
+  sub->add_option("--memory-budget", *memory_budget, kMemoryBudgetHelp);
   sub->add_option("-j,--jobs", *jobs, "jobs at a time (default: cores)");
   add_executor_flags(sub, *executor_flags);
   sub->add_option("--timeout", *timeout, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->callback([=, &exit_code] {
     auto options = scheduler_options(*db, *jobs, *timeout, {});
+    apply_memory_budget(options, *executor_flags, *memory_budget);
     auto executor = make_executor(*executor_flags, *db, *jobs, options);
     Store store(*db, true);
     const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);

@@ -1,5 +1,6 @@
 // gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--start nested|analytic]
-//                       [--vtk DIR] [--max-memory SIZE] [--progress FILE] [-v|-q]
+//                       [--vtk DIR] [--max-memory SIZE] [--progress FILE]
+//                       [--checkpoint FILE] [--resume FILE] [-v|-q]
 //
 // Parses the job (relative paths against the job file's folder), solves it,
 // and writes the result JSON atomically (temporary file + rename; stdout
@@ -8,6 +9,9 @@
 // input (nothing written); 1 internal error. --progress FILE: a small JSON
 // (iteration, residuals, dp_star, elapsed, cells; docs/INTERFACE.md) rewritten
 // atomically with every progress log line (≈ every 2 s) for `gridfree status`.
+// SIGTERM/SIGINT: stop after the current outer iteration, write the state to
+// --checkpoint FILE (if given) and exit 130 without a result; --resume FILE
+// continues from such a checkpoint (flow/checkpoint.h).
 #include <malloc.h>
 #include <unistd.h>
 
@@ -29,6 +33,7 @@
 #include "job/job_spec.h"
 #include "job/memory_estimate.h"
 #include "job/result.h"
+#include "stop_request.h"
 #include "thread_count.h"
 
 namespace gridfree::worker_cli {
@@ -42,6 +47,8 @@ struct SolveCommandOptions {
   std::string max_memory;  // "" = physical memory
   std::string progress_file;
   std::string start = "nested";
+  std::string checkpoint_file;
+  std::string resume_file;
   bool verbose = false;
   bool quiet = false;
 };
@@ -113,6 +120,9 @@ int run_solve(const SolveCommandOptions& o) {
   SolveOptions options;
   options.nested_start = o.start == "nested";
   if (!o.vtk_dir.empty()) options.vtk_dir = std::filesystem::path(o.vtk_dir);
+  if (!o.checkpoint_file.empty()) options.checkpoint_file = std::filesystem::path(o.checkpoint_file);
+  if (!o.resume_file.empty()) options.resume_file = std::filesystem::path(o.resume_file);
+  options.stop_requested = [] { return stop_requested(); };
   const auto start = std::chrono::steady_clock::now();
   auto last = start;
   options.on_iteration = [&](const IterationReport& r) {
@@ -142,7 +152,15 @@ int run_solve(const SolveCommandOptions& o) {
   };
   spdlog::info("solving {} on {}x{}x{} cells with {} thread(s)", job.case_spec.name, job.numerics.cells[0],
                job.numerics.cells[1], job.numerics.cells[2], threads);
-  const JobResult result = solve_job(job, options);
+  install_stop_handlers();
+  JobResult result;
+  try {
+    result = solve_job(job, options);
+  } catch (const SolveStopped& stopped) {
+    spdlog::warn("{}; {}", stopped.what(),
+                 stopped.checkpoint_written ? "checkpoint written to " + o.checkpoint_file : "no checkpoint written");
+    return to_int(ExitCode::kInterrupted);
+  }
   if (result.status == SolveStatus::kConverged)
     spdlog::info("converged after {} iterations: dp_star = {:.8g} ({:.1f} s)", result.iterations,
                  result.dp_star.value_or(0.0), result.wall_s);
@@ -174,6 +192,11 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("--vtk", opts->vtk_dir, "write the final fields as legacy VTK into this folder");
   sub->add_option("--progress", opts->progress_file,
                   "rewrite this JSON file (iteration, residuals, elapsed) every ~2 s while solving");
+  sub->add_option("--checkpoint", opts->checkpoint_file,
+                  "on SIGTERM/SIGINT, write the solver state here (atomically) and exit 130");
+  sub->add_option("--resume", opts->resume_file,
+                  "continue from this checkpoint if it is this job's (missing: start from zero; "
+                  "corrupt or another job's: warning, start from zero)");
   sub->add_flag("-v,--verbose", opts->verbose, "debug output");
   sub->add_flag("-q,--quiet", opts->quiet, "warnings and errors only");
   sub->callback([opts, &exit_code] { exit_code = run_solve(*opts); });

@@ -36,7 +36,15 @@ std::string describe(const JobExit& e) {
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
                                         int threads) {
   return {worker.string(), "solve", (run_dir / "job.json").string(), "-o", (run_dir / "result.json").string(),
-          "--threads", std::to_string(threads < 1 ? 1 : threads), "--progress", (run_dir / "progress.json").string()};
+          "--threads", std::to_string(threads < 1 ? 1 : threads), "--progress", (run_dir / "progress.json").string(),
+          "--checkpoint", checkpoint_file(run_dir).string(), "--resume", checkpoint_file(run_dir).string()};
+}
+
+std::filesystem::path checkpoint_file(const std::filesystem::path& run_dir) { return run_dir / "checkpoint.bin"; }
+
+void remove_checkpoint(const std::filesystem::path& run_dir) {
+  std::error_code ec;
+  std::filesystem::remove(checkpoint_file(run_dir), ec);
 }
 
 std::filesystem::path runs_root_for(const std::filesystem::path& db_file) {

@@ -75,7 +75,9 @@ class Executor {
   virtual bool adopt(const JobLaunch& /*job*/, const std::string& /*external_id*/) { return false; }
 };
 
-// The worker command line (docs/INTERFACE.md §2) for a run directory.
+// The worker command line (docs/INTERFACE.md §2) for a run directory:
+// result, progress and checkpoint files in it; the worker resumes from the
+// checkpoint when one is there (a stop or timeout left it).
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
                                         int threads);
 
@@ -83,6 +85,16 @@ std::vector<std::string> worker_command(const std::filesystem::path& worker, con
 // result.json removed.
 std::filesystem::path prepare_run_dir(const std::filesystem::path& runs_root, const std::string& job_hash,
                                       const std::string& job_json);
+
+// <run_dir>/checkpoint.bin: where a worker asked to stop writes its state.
+std::filesystem::path checkpoint_file(const std::filesystem::path& run_dir);
+
+// Removes a job's checkpoint once its result is committed (no error if none).
+void remove_checkpoint(const std::filesystem::path& run_dir);
+
+// Seconds a worker has, after SIGTERM (a timeout, a shutdown), to finish
+// its outer iteration and write its checkpoint before SIGKILL.
+inline constexpr double kStopGraceSeconds = 30.0;
 
 // "<db file>.runs" beside the database.
 std::filesystem::path runs_root_for(const std::filesystem::path& db_file);

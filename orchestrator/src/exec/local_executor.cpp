@@ -178,12 +178,19 @@ std::string LocalExecutor::external_id(long long job_id) const {
   return "";
 }
 
+// Timeout: SIGTERM to the group (the worker checkpoints), SIGKILL after the
+// grace period.
 void LocalExecutor::enforce_deadlines() {
   const auto now = Clock::now();
+  const auto grace = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(stop_grace_s_));
   for (auto& [pid, c] : running_) {
     if (!c.timed_out && c.deadline && now >= *c.deadline) {
-      killpg(pid, SIGKILL);
+      killpg(pid, SIGTERM);
       c.timed_out = true;
+      c.kill_at = now + grace;
+    } else if (c.kill_at && now >= *c.kill_at) {
+      killpg(pid, SIGKILL);
+      c.kill_at.reset();
     }
   }
 }
@@ -234,13 +241,31 @@ std::optional<JobExit> LocalExecutor::wait_any(double timeout_s) {
   }
 }
 
+// Shutdown: SIGTERM to every running worker (each writes its checkpoint),
+// then SIGKILL to whatever is left after the grace period.
 std::vector<long long> LocalExecutor::kill_all() {
   std::vector<long long> ids;
   for (auto& [pid, c] : running_) {
-    if (c.gate >= 0) ::close(c.gate);  // a held child exits on the closed pipe
-    killpg(pid, SIGKILL);
+    if (c.gate >= 0) {  // held: never ran; exits on the closed pipe
+      ::close(c.gate);
+      c.gate = -1;
+      killpg(pid, SIGKILL);
+    } else {
+      killpg(pid, SIGTERM);
+    }
+  }
+  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(stop_grace_s_));
+  for (auto& [pid, c] : running_) {
     int status = 0;
-    waitpid(pid, &status, 0);
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+      if (Clock::now() >= until) {
+        killpg(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    killpg(pid, SIGKILL);  // anything the worker left in its group
     ids.push_back(c.job_id);
   }
   running_.clear();

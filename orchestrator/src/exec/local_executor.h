@@ -2,7 +2,9 @@
 // process group (so a timeout or shutdown kills it and anything it started,
 // and a terminal's Ctrl-C reaches only the orchestrator), stdin from
 // /dev/null, stdout+stderr into <run_dir>/worker.log. Finished children are
-// found by waitpid(WNOHANG) polling; timeouts kill the whole group.
+// found by waitpid(WNOHANG) polling. A timeout or a shutdown sends SIGTERM to
+// the whole group (the worker writes a checkpoint and exits 130) and SIGKILL
+// after the grace period (kStopGraceSeconds).
 //
 // A held launch (JobLaunch::hold) forks a child that sets up its process
 // group and then blocks reading a pipe from the orchestrator; release()
@@ -15,6 +17,7 @@
 
 #include <chrono>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +27,8 @@ namespace gridfree {
 
 class LocalExecutor : public Executor {
  public:
-  explicit LocalExecutor(std::filesystem::path worker) : worker_(std::move(worker)) {}
+  explicit LocalExecutor(std::filesystem::path worker, double stop_grace_s = kStopGraceSeconds)
+      : worker_(std::move(worker)), stop_grace_s_(stop_grace_s) {}
   ~LocalExecutor() override;
 
   void start(const JobLaunch& job) override;
@@ -43,6 +47,7 @@ class LocalExecutor : public Executor {
     std::optional<Clock::time_point> deadline;
     double timeout_s = 0;
     bool timed_out = false;
+    std::optional<Clock::time_point> kill_at;  // SIGTERM sent: SIGKILL then
     int gate = -1;  // write end of the hold pipe until released
   };
   void start_held(const JobLaunch& job, const std::vector<char*>& argv, const std::string& log);
@@ -50,6 +55,7 @@ class LocalExecutor : public Executor {
   void enforce_deadlines();
 
   std::filesystem::path worker_;
+  double stop_grace_s_ = kStopGraceSeconds;
   std::map<pid_t, Child> running_;
   std::vector<JobExit> failed_launches_;
 };

@@ -44,8 +44,17 @@ std::string array_script(const std::filesystem::path& worker, const SlurmArray& 
     if (at != std::string::npos) word = shell_quote(w.substr(0, at)) + "\"$dir\"" + shell_quote(w.substr(at + 8));
     line += (line.empty() ? "" : " ") + word;
   }
-  s << line << " > \"$dir/worker.log\" 2>&1\n"
+  // The worker runs in the background so that the shell can pass on the
+  // SIGTERM Slurm sends it (--signal=B:TERM@..., pre-emption): the worker
+  // then writes its checkpoint and exits 130. `wait` returns early when the
+  // trap runs; the loop waits again until the worker itself has ended.
+  s << line << " > \"$dir/worker.log\" 2>&1 &\n"
+    << "pid=$!\n"
+    << "stopped=0\n"
+    << "trap 'stopped=1; kill -TERM $pid 2>/dev/null' TERM\n"
+    << "wait $pid\n"
     << "code=$?\n"
+    << "while [ $stopped = 1 ] && kill -0 $pid 2>/dev/null; do wait $pid; code=$?; done\n"
     << "echo $code > \"$dir/exit_code.tmp\" && mv \"$dir/exit_code.tmp\" \"$dir/exit_code\"\n"
     << "exit $code\n";
   return s.str();
@@ -61,6 +70,11 @@ std::vector<std::string> sbatch_command(const SlurmArray& a, const SlurmSettings
   c.push_back(range);
   if (a.time_minutes > 0) c.push_back("--time=" + std::to_string(a.time_minutes));
   if (a.mem_mb > 0) c.push_back("--mem=" + std::to_string(a.mem_mb) + "M");
+  // SIGTERM to the batch shell this long before the time limit (the script
+  // passes it to the worker, which checkpoints); no requeue by Slurm itself:
+  // gridfree resubmits a stopped job, which resumes from its checkpoint.
+  c.push_back("--signal=B:TERM@" + std::to_string(kSlurmStopLeadSeconds));
+  c.push_back("--no-requeue");
   if (!s.partition.empty()) c.push_back("--partition=" + s.partition);
   if (!s.account.empty()) c.push_back("--account=" + s.account);
   if (!s.qos.empty()) c.push_back("--qos=" + s.qos);

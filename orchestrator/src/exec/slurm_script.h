@@ -13,6 +13,11 @@
 
 namespace gridfree {
 
+// Seconds before the time limit at which Slurm sends SIGTERM to the batch
+// shell (--signal=B:TERM@120): time for the worker to finish its outer
+// iteration and write its checkpoint before SIGKILL.
+inline constexpr int kSlurmStopLeadSeconds = 120;
+
 struct SlurmArray {
   std::string name;                              // --job-name
   std::vector<std::filesystem::path> run_dirs;   // task i -> run_dirs[i]

@@ -1,6 +1,8 @@
 // Failure classification of finished jobs (see outcome.h).
 #include "sched/outcome.h"
 
+#include <chrono>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -63,6 +65,17 @@ ResultRow read_result_file(const std::filesystem::path& file) {
   return r;
 }
 
+// True when the run folder holds a checkpoint written since this attempt
+// started (its modification time within the attempt's wall time, 1 s slack
+// for file-system time granularity).
+static bool checkpoint_from_this_attempt(const JobExit& e) {
+  std::error_code ec;
+  const auto written = std::filesystem::last_write_time(checkpoint_file(e.run_dir), ec);
+  if (ec) return false;
+  const auto age = std::chrono::duration<double>(std::filesystem::file_time_type::clock::now() - written).count();
+  return age <= e.wall_s + 1.0;
+}
+
 JobOutcome classify_exit(const JobExit& e) {
   JobOutcome out;
   const auto result_file = e.run_dir / "result.json";
@@ -123,6 +136,11 @@ JobOutcome classify_exit(const JobExit& e) {
     }
     out.row.status = "invalid";
     if (out.row.reason.empty()) out.row.reason = "worker rejected the job (exit 2)" + log_tail();
+    return out;
+  }
+  if (e.code == 130 && checkpoint_from_this_attempt(e)) {  // stopped (pre-emption) with its work kept
+    out.kind = OutcomeKind::kReleased;
+    out.row.reason = "stopped by a signal; checkpoint kept, the next attempt resumes from it";
     return out;
   }
   out.kind = OutcomeKind::kRetryable;

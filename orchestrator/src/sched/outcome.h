@@ -5,6 +5,9 @@
 //   exit 2                               → final: invalid (not retried: the input is wrong)
 //   exit 1, other codes, a signal, a timeout,
 //   a missing or garbage result file     → retryable (one more attempt, then failed)
+//   exit 130 with a checkpoint written
+//   during this attempt (Slurm pre-emption,
+//   a SIGTERM from outside)              → released (the next attempt resumes from it)
 //   killed by our own shutdown, or gone
 //   without a trace while nobody watched → released (queued again, attempt not spent)
 //   refused by the cluster (bad partition,

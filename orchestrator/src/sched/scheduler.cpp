@@ -1,6 +1,7 @@
 // The scheduler loop (see scheduler.h).
 #include "sched/scheduler.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -10,6 +11,8 @@
 #include <spdlog/spdlog.h>
 
 #include "exec/local_executor.h"
+#include "job/memory_estimate.h"
+#include "sched/budget_claim.h"
 #include "sched/job_timeout.h"
 #include "sched/outcome.h"
 #include "sched/series_finish.h"
@@ -22,7 +25,17 @@ namespace {
 struct InFlight {
   ClaimedJob job;
   std::string label;
+  double memory_bytes = 0;  // need(job), reserved while it runs (sched/budget.h)
 };
+
+BudgetUse budget_use(const std::map<long long, InFlight>& running) {
+  BudgetUse u;
+  for (const auto& [id, f] : running) {
+    u.memory_bytes += f.memory_bytes;
+    ++u.jobs;
+  }
+  return u;
+}
 
 std::string job_label(Store& store, const ClaimedJob& job) {
   auto st = store.db().prepare(
@@ -122,7 +135,10 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
                                const std::vector<ClaimedJob>& adopted) {
   SchedulerSummary sum;
   std::map<long long, InFlight> running;
-  for (const auto& job : adopted) running.emplace(job.job_id, InFlight{job, job_label(store, job)});
+  for (const auto& job : adopted)
+    running.emplace(job.job_id, InFlight{job, job_label(store, job), job_memory_estimate_bytes(job.cells)});
+  const BudgetPolicy policy{o.memory_budget_bytes, o.workers, std::max(1, o.workers)};
+  HeadReservation reservation;
   auto record_updates = [&] {
     for (const auto& u : executor.take_updates()) store.set_queue_state(u.job_id, u.external_id, u.state, u.reason);
   };
@@ -141,9 +157,12 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     if (o.stop_requested()) break;
     // 1. start while there is capacity
     while (static_cast<int>(running.size()) < o.workers && !o.stop_requested()) {
-      auto job = store.claim_next(o.study, o.owner);
+      auto job = claim_within_budget(store, o.study, o.owner, budget_use(running), policy, reservation);
       if (!job) break;
-      InFlight f{*job, job_label(store, *job)};
+      InFlight f{*job, job_label(store, *job), job_memory_estimate_bytes(job->cells)};
+      if (o.memory_budget_bytes > 0 && f.memory_bytes > o.memory_budget_bytes)
+        spdlog::warn("{}: its estimated memory {} exceeds the memory budget {}; it runs alone", f.label,
+                     memory_text(f.memory_bytes), memory_text(o.memory_budget_bytes));
       JobLaunch launch;
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
@@ -195,7 +214,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     JobOutcome out = classify_exit(*exit);
     std::string what = f.label + ": ";
     if (out.kind == OutcomeKind::kFinal) {
-      store.record_result(f.job.job_id, o.owner, out.row);
+      if (store.record_result(f.job.job_id, o.owner, out.row)) remove_checkpoint(exit->run_dir);
       ++sum.finished;
       if (out.row.status == "converged") {
         ++sum.converged;
@@ -212,6 +231,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
         ++sum.retried;
         what += "will retry: " + out.row.reason;
       } else {
+        remove_checkpoint(exit->run_dir);
         ++sum.finished;
         ++sum.failed;
         what += "failed: " + out.row.reason;

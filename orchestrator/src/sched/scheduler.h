@@ -1,6 +1,7 @@
 // The scheduler loop (ninja's, in spirit):
 //
-//   1. while there is capacity: claim the next queued job, write its run
+//   1. while the budget allows (sched/budget.h: -j jobs, the memory budget,
+//      largest first, bounded backfill): claim that job, write its run
 //      directory, start it;
 //   2. wait for one job to finish;
 //   3. classify its exit (outcome.h) and record it in one transaction;
@@ -27,6 +28,9 @@ struct SchedulerOptions {
   std::optional<long long> study;   // run: this study only; daemon: nullopt (all)
   int workers = 1;                  // jobs at once (-j)
   int threads_per_job = 1;          // --threads of each worker (cores / j, at least 1)
+  // Memory budget (sched/budget.h): a job starts only when the estimates of
+  // the running jobs plus its own fit; 0 = none (Slurm places the jobs).
+  double memory_budget_bytes = 0;
   double timeout_s = -1;            // per job; 0 = none, < 0 = default_job_timeout_s (sched/job_timeout.h)
   int max_attempts = 2;             // a retryable failure is tried once more
   bool stop_when_idle = true;       // run: yes; daemon: no (poll for new work)

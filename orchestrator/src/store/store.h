@@ -129,7 +129,9 @@ class Store {
 
   // Claims the next queued job (of `study`, or of any active study in
   // submission order): running, attempts + 1, owner recorded. Atomic.
-  std::optional<ClaimedJob> claim_next(std::optional<long long> study, const std::string& owner);
+  // `job`: claim exactly this queued job (the scheduler's budget chose it).
+  std::optional<ClaimedJob> claim_next(std::optional<long long> study, const std::string& owner,
+                                       std::optional<long long> job = std::nullopt);
 
   // Records the final result of a running job owned by `owner` (job → done
   // when converged, failed otherwise). False if the job is no longer ours.

@@ -93,6 +93,41 @@ TEST(LocalExecutor, TimeoutKillsTheWholeProcessGroup) {
   EXPECT_TRUE(gone);
 }
 
+// A timeout is SIGTERM first: the worker writes its checkpoint and exits.
+TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
+  const auto root = temp_dir("timeout_term");
+  LocalExecutor ex(kFake);
+  ex.start(launch(root, 8, "checkpoint", 0.5));
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  EXPECT_TRUE(fs::exists(checkpoint_file(e.run_dir)));
+  EXPECT_LT(e.wall_s, 5.0);  // well before the 30 s grace: it ended on SIGTERM
+}
+
+// ... and SIGKILL after the grace period when SIGTERM is ignored.
+TEST(LocalExecutor, TimeoutEndsAWorkerIgnoringSigtermAfterTheGrace) {
+  const auto root = temp_dir("timeout_kill");
+  LocalExecutor ex(kFake, 0.5);
+  ex.start(launch(root, 9, "stubborn", 0.3));
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  EXPECT_GE(e.wall_s, 0.8);  // timeout + grace
+  EXPECT_FALSE(fs::exists(checkpoint_file(e.run_dir)));
+}
+
+TEST(LocalExecutor, ShutdownLetsWorkersCheckpoint) {
+  const auto root = temp_dir("killall_term");
+  LocalExecutor ex(kFake, 5);
+  ex.start(launch(root, 1, "checkpoint"));
+  ex.start(launch(root, 2, "stubborn"));
+  usleep(300000);  // let the shells install their traps
+  const auto ids = ex.kill_all();
+  EXPECT_EQ(ids.size(), 2u);
+  EXPECT_TRUE(fs::exists(checkpoint_file(root / "hash1")));
+  EXPECT_FALSE(fs::exists(checkpoint_file(root / "hash2")));
+  EXPECT_EQ(ex.in_flight(), 0u);
+}
+
 TEST(LocalExecutor, MissingWorkerIsALaunchFailure) {
   const auto root = temp_dir("missing");
   LocalExecutor ex(root / "no-such-worker");

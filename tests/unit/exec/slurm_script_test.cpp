@@ -41,6 +41,31 @@ TEST(SlurmScript, EachTaskRunsTheWorkerInItsOwnFolderWhateverTheName) {
   EXPECT_NE(std::system(("SLURM_ARRAY_TASK_ID=7 sh '" + (dir / "job.sh").string() + "' 2>/dev/null").c_str()), 0);
 }
 
+// Slurm's SIGTERM goes to the batch shell (--signal=B:TERM@...): the script
+// passes it to the worker and records the worker's own exit code (130 after
+// a checkpoint), not the shell's interrupted wait.
+TEST(SlurmScript, TermToTheShellReachesTheWorkerAndItsExitCodeIsKept) {
+  const auto dir = test_support::fresh_scratch_dir("slurm_script", "term");
+  const fs::path worker = dir / "worker.sh";
+  std::ofstream(worker) << "#!/bin/sh\ntrap 'sleep 0.3; exit 130' TERM\n: > \"$(dirname \"$2\")/started\"\n"
+                           "i=0; while [ $i -lt 200 ]; do sleep 0.05; i=$((i+1)); done\nexit 0\n";
+  fs::permissions(worker, fs::perms::owner_all);
+  SlurmArray a;
+  a.run_dirs = {dir / "run"};
+  fs::create_directories(a.run_dirs[0]);
+  std::ofstream(dir / "job.sh") << array_script(worker, a, {});
+  const std::string cmd = "cd '" + dir.string() + "' && (SLURM_ARRAY_TASK_ID=0 sh job.sh & echo $! > shell.pid; wait) ; "
+                          "true";
+  const std::string driver = "(" + cmd + ") & i=0; while [ ! -e '" + (a.run_dirs[0] / "started").string() +
+                             "' ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i+1)); done; kill -TERM $(cat '" +
+                             (dir / "shell.pid").string() + "'); wait";
+  ASSERT_EQ(std::system(driver.c_str()), 0);
+  std::ifstream code(a.run_dirs[0] / "exit_code");
+  int c = -1;
+  code >> c;
+  EXPECT_EQ(c, 130);
+}
+
 TEST(SlurmScript, SbatchGetsEverySettingAsItsOwnWord) {
   SlurmArray a;
   a.name = "study/series d*=2.5";
@@ -58,7 +83,8 @@ TEST(SlurmScript, SbatchGetsEverySettingAsItsOwnWord) {
   const auto c = sbatch_command(a, s, "/runs dir/s.sbatch", "/runs dir/slurm");
   const std::vector<std::string> want = {"sbatch", "--parsable", "--job-name=study/series_d*=2.5",
                                          "--output=/runs dir/slurm/%A_%a.out", "--cpus-per-task=4",
-                                         "--array=0-2%8", "--time=16", "--mem=512M", "--partition=p",
+                                         "--array=0-2%8", "--time=16", "--mem=512M", "--signal=B:TERM@120",
+                                         "--no-requeue", "--partition=p",
                                          "--account=acc", "--qos=q", "--constraint=c", "--exclusive",
                                          "/runs dir/s.sbatch"};
   EXPECT_EQ(c, want);

@@ -69,7 +69,8 @@ class PhaseClock {
 
 SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& settings,
                          FlowState& state, const DragUpdate& drag,
-                         const QuantityOfInterest& qoi, const IterationCallback& on_iteration) {
+                         const QuantityOfInterest& qoi, const IterationCallback& on_iteration,
+                         const LoopControl& control) {
   const Grid& g = problem.grid;
   auto ws = std::make_unique<Workspace>(g);
   update_eps_faces(problem, state);
@@ -85,7 +86,15 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
   std::vector<double> x_entering;
   if (settings.anderson_depth > 0) mixer = std::make_unique<AndersonMixer>(settings.anderson_depth);
 
-  for (int it = 1; it <= settings.max_iterations; ++it) {
+  int first_iteration = 1;
+  if (control.resume) {
+    first_iteration = control.resume->iteration + 1;
+    qoi_history.assign(control.resume->qoi_history.begin(), control.resume->qoi_history.end());
+    first_continuity = control.resume->first_continuity;
+    first_momentum = control.resume->first_momentum;
+  }
+
+  for (int it = first_iteration; it <= settings.max_iterations; ++it) {
     IterationReport report;
     report.iteration = it;
 
@@ -178,6 +187,13 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     if (it >= settings.min_iterations && drag_fresh && report.continuity < tol && report.momentum < tol &&
         (!qoi || report.qoi_change < tol)) {
       out.status = SolveStatus::kConverged;
+      return out;
+    }
+    if (control.stop_requested && control.stop_requested()) {
+      if (control.on_stop)
+        control.on_stop(state, LoopCounters{it, {qoi_history.begin(), qoi_history.end()}, first_continuity,
+                                            first_momentum});
+      out.stopped = true;
       return out;
     }
   }

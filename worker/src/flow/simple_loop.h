@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "flow/flow_state.h"
 #include "job/result.h"
@@ -79,6 +80,25 @@ struct SimpleOutcome {
   std::optional<double> qoi_iterative_error;
   PhaseSeconds seconds;
   bool linear_failures = false;  // some linear solve missed its tolerance
+  bool stopped = false;          // LoopControl::stop_requested ended it early
+};
+
+// Stop and resume (flow/checkpoint.h): the loop's own state, besides
+// FlowState, that the next iteration needs.
+struct LoopCounters {
+  int iteration = 0;                 // outer iterations done
+  std::vector<double> qoi_history;   // the last ≤ 2·qoi_window + 1 values, oldest first
+  double first_continuity = -1;      // blow-up references (max of iterations 1–5)
+  double first_momentum = -1;
+};
+
+struct LoopControl {
+  const LoopCounters* resume = nullptr;  // continue after these (state holds p, u, β, βv̄)
+  // Polled after every iteration that neither converged nor diverged; when
+  // true, on_stop gets the state and counters and the loop returns with
+  // SimpleOutcome::stopped set.
+  std::function<bool()> stop_requested;
+  std::function<void(const FlowState&, const LoopCounters&)> on_stop;
 };
 
 // Recomputes state.drag from state (β, βv̄ at cell centres).
@@ -90,6 +110,7 @@ using IterationCallback = std::function<void(const IterationReport&)>;
 // steady state. `drag` may be empty (β kept as given), `qoi` may be empty.
 SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& settings,
                          FlowState& state, const DragUpdate& drag,
-                         const QuantityOfInterest& qoi, const IterationCallback& on_iteration);
+                         const QuantityOfInterest& qoi, const IterationCallback& on_iteration,
+                         const LoopControl& control = {});
 
 }  // namespace gridfree

@@ -11,11 +11,13 @@
 
 #include "coupling/drag_field.h"
 #include "coupling/solids_fraction.h"
+#include "flow/checkpoint.h"
 #include "flow/initial_state.h"
 #include "flow/mass_flux.h"
 #include "flow/probes.h"
 #include "flow/prolong.h"
 #include "flow/vtk_writer.h"
+#include "job/job_hash.h"
 
 namespace gridfree {
 namespace {
@@ -73,6 +75,8 @@ std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet
   SolveOptions quiet = options;
   quiet.on_iteration = {};
   quiet.vtk_dir.reset();
+  quiet.checkpoint_file.reset();  // a checkpoint is of the job's own grid only
+  quiet.resume_file.reset();
   spdlog::info("nested start: solving on {}x{}x{} cells first", (*cells)[0], (*cells)[1], (*cells)[2]);
   CoarseSolution sol;
   const JobResult r = solve_grid(coarse, particles, quiet, &sol);
@@ -86,6 +90,21 @@ std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet
     return std::nullopt;
   }
   return sol;
+}
+
+// The checkpoint to resume from, if options.resume_file names a usable one.
+std::optional<Checkpoint> usable_checkpoint(const SolveOptions& options, const std::string& hash, const Grid& g) {
+  if (!options.resume_file) return std::nullopt;
+  if (!std::filesystem::exists(*options.resume_file)) {
+    spdlog::info("no checkpoint at {}: starting from zero", options.resume_file->string());
+    return std::nullopt;
+  }
+  auto cp = read_checkpoint(*options.resume_file, hash, g);
+  if (auto* why = std::get_if<std::string>(&cp)) {
+    spdlog::warn("ignoring the checkpoint {}: {}; starting from zero", options.resume_file->string(), *why);
+    return std::nullopt;
+  }
+  return std::move(std::get<Checkpoint>(cp));
 }
 
 }  // namespace
@@ -165,8 +184,10 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
 
   // 4. Nested start (a solution on a coarser grid), drag coupling, warm
   // start and outer iterations.
+  const std::string hash = job_hash(job.source);
+  std::optional<Checkpoint> resume = usable_checkpoint(options, hash, g);
   std::optional<CoarseSolution> coarse;
-  if (options.nested_start && !options.cold_start) coarse = nested_start(job, particles, options);
+  if (!resume && options.nested_start && !options.cold_start) coarse = nested_start(job, particles, options);
   const DragSettings drag_settings{num.drag, d, cs.gas.density_g_cm3, cs.gas.viscosity_g_cm_s};
   std::optional<ParticleDragField> particle_drag;
   if (!uniform) {
@@ -187,6 +208,23 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
     result.extra["nested_start"] = coarse->levels;
     coarse.reset();
   }
+  LoopControl control;
+  if (resume) {
+    state.p = std::move(resume->state.p);
+    state.u = std::move(resume->state.u);
+    state.drag = std::move(resume->state.drag);
+    control.resume = &resume->counters;
+    result.extra["resumed_from_iteration"] = resume->counters.iteration;
+    spdlog::info("resuming from the checkpoint after iteration {}", resume->counters.iteration);
+  }
+  control.stop_requested = options.stop_requested;
+  bool checkpoint_written = false;
+  if (options.checkpoint_file)
+    control.on_stop = [&](const FlowState& st, const LoopCounters& counters) {
+      write_checkpoint(*options.checkpoint_file, hash, g, st, counters);
+      checkpoint_written = true;
+      spdlog::info("checkpoint after iteration {} written to {}", counters.iteration, options.checkpoint_file->string());
+    };
 
   const double u0 = inflow_velocity(problem.bc);
   const double y1 = cs.probes.y1_dp * d, y2 = cs.probes.y2_dp * d;
@@ -196,8 +234,9 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
 
   const SimpleSettings settings = simple_settings_for(num, options.simple);
   const auto t_iter = Clock::now();
-  const SimpleOutcome out = run_simple(problem, settings, state, drag, qoi, options.on_iteration);
+  const SimpleOutcome out = run_simple(problem, settings, state, drag, qoi, options.on_iteration, control);
   const double t_iterations = seconds_since(t_iter);
+  if (out.stopped) throw SolveStopped(out.iterations, checkpoint_written);
 
   // 5. Result.
   result.status = out.status;

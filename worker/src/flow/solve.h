@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "flow/simple_loop.h"
 #include "job/job_spec.h"
@@ -29,6 +31,25 @@ struct SolveOptions {
   std::size_t nested_min_cells = 20000;  // no nested start below this many cells
   // Called after every outer iteration (progress output).
   IterationCallback on_iteration;
+  // Stop and resume (flow/checkpoint.h, docs/INTERFACE.md §2). Polled after
+  // every outer iteration; when it returns true the solve writes its state
+  // to checkpoint_file (if set) and throws SolveStopped. A stop during the
+  // nested start's coarse solve writes no checkpoint.
+  std::function<bool()> stop_requested;
+  std::optional<std::filesystem::path> checkpoint_file;
+  // Continue from this checkpoint: a missing file means start from zero; a
+  // file that is not this job's (hash, grid) or is corrupt is ignored with a
+  // warning, never partly used.
+  std::optional<std::filesystem::path> resume_file;
+};
+
+// Thrown by solve_job when SolveOptions::stop_requested ended the solve.
+struct SolveStopped : std::runtime_error {
+  SolveStopped(int iteration_, bool written) :
+      std::runtime_error("stopped on request after iteration " + std::to_string(iteration_)),
+      iteration(iteration_), checkpoint_written(written) {}
+  int iteration = 0;
+  bool checkpoint_written = false;
 };
 
 // SimpleSettings of a job: steady tolerance and max_iterations from the job,
