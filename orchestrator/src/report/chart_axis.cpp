@@ -75,6 +75,12 @@ AxisTicks log_ticks(double data_lo, double data_hi) {
   return ticks;
 }
 
+AxisScale scale_for_span(double data_lo, double data_hi) {
+  if (data_lo > data_hi) std::swap(data_lo, data_hi);
+  const bool positive = data_lo > 0 && std::isfinite(data_hi);
+  return positive && data_hi > 10.0 * data_lo ? AxisScale::log : AxisScale::linear;
+}
+
 namespace {
 
 std::string superscript_integer(int k) {

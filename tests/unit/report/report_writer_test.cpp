@@ -93,7 +93,7 @@ class ReportWriter : public ::testing::Test {
 
 TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
   for (const char* name : {"report.md", "report.html", "grids.csv", "series.csv", "differences.csv", "gci.csv",
-                           "cost.csv", "failures.csv", "fig2_rde.svg", "speed_accuracy.svg",
+                           "cost.csv", "failures.csv", "fig2_rde.svg", "speed_accuracy.svg", "speed_accuracy_work.svg",
                            "fig1_01_PC1_superbee_fwhm6_bvk.svg", "gci_01_PC1_superbee_fwhm6_bvk.svg",
                            "fig1_02_PC1_superbee_fwhm6_hkl.svg", "fig1_03_PC2_superbee_fwhm6_bvk.svg",
                            "gci_03_PC2_superbee_fwhm6_bvk.svg"}) {
