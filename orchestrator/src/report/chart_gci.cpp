@@ -98,6 +98,9 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
     chart.y.min = t.lo;
     chart.y.max = t.hi;
   }
+  // Room right of the coarsest grid, so its error bar is not on the frame.
+  if (!e.grids.empty() && chart.x.scale == AxisScale::linear)
+    chart.x.max = linear_ticks(0.0, e.grids.back().h * 1.05, 7).hi;
   chart.series.push_back(grids);
   for (auto& b : bands) {
     if (!b.x.empty()) chart.series.push_back(std::move(b));

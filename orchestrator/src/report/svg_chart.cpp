@@ -205,7 +205,13 @@ std::string render_svg(const Chart& given) {
   }
   int offscale = 0;
   std::ostringstream points;
-  LabelBoxes labels;
+  LabelBoxes labels;  // markers first, so that point labels avoid them too
+  for (const auto& s : chart.series) {
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()) && s.marker != Marker::none; ++i) {
+      if (mx.contains(s.x[i]) && my.contains(s.y[i]))
+        labels.boxes.push_back({mx(s.x[i]) - 4, my(s.y[i]) - 4, mx(s.x[i]) + 4, my(s.y[i]) + 4});
+    }
+  }
   for (std::size_t si = 0; si < chart.series.size(); ++si) {
     const auto& s = chart.series[si];
     const std::string colour = palette_colour(s.colour >= 0 ? s.colour : int(si));

@@ -57,7 +57,7 @@ struct ChartAxis {
   // Log scale when the positive data span more than a decade (chart_axis.h
   // scale_for_span); a fixed min ≤ 0 is then dropped.
   bool auto_log = false;
-  std::string tick_suffix;          // appended to every tick label, e.g. "%"
+  std::string tick_suffix = {};     // appended to every tick label, e.g. "%"
 };
 
 struct Chart {

@@ -113,7 +113,7 @@ TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
     }
     EXPECT_NE(read(dir_ / "report.html").find("fig2_rde.pdf"), std::string::npos);
   }
-  EXPECT_EQ(files_.svg.size(), 2u + 3u + 3u);  // overview + per-series fig1 + gci
+  EXPECT_EQ(files_.svg.size(), 3u + 3u + 3u);  // overview (RDE, 2 × cost) + per-series fig1 + gci
   for (const auto& entry : fs::directory_iterator(dir_)) {
     EXPECT_NE(entry.path().filename().string().front(), '.') << "left over: " << entry.path();
   }
