@@ -111,7 +111,16 @@ std::string format_tick(double value, const AxisTicks& ticks, AxisScale scale) {
   }
   const double magnitude = std::max(std::abs(ticks.lo), std::abs(ticks.hi));
   if (value == 0) return "0";
-  if (magnitude >= 1e7 || magnitude < 1e-4) return format_g(value, 3);
+  if (magnitude < 1e-4) return format_g(value, 3);
+  if (magnitude >= 1e5) {
+    // m×10ᵏ with the axis' exponent: 4000000 → "4×10⁶", 2500000 → "2.5×10⁶".
+    const int k = static_cast<int>(std::floor(std::log10(magnitude) + 1e-9));
+    const double power = std::pow(10.0, k);
+    const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(ticks.step / power) + 1e-9)));
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value / power);
+    return buffer + std::string("×10") + superscript_integer(k);
+  }
   const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(ticks.step) + 1e-9)));
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
