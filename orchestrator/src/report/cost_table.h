@@ -15,7 +15,7 @@
 namespace gridfree {
 
 inline constexpr const char* kNoGridMeetsTarget = "none of the run grids";
-inline const std::vector<double> kTargetRdes{0.10, 0.05, 0.02, 0.01, 0.005};
+inline const std::vector<double> kTargetRdes{0.10, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001};
 
 // One grid of a series that meets `target` at the least CPU time, or null.
 const GridPoint* cheapest_grid_for(const SeriesSummary& s, double target);
