@@ -75,6 +75,12 @@ AxisTicks log_ticks(double data_lo, double data_hi) {
   return ticks;
 }
 
+AxisScale scale_for_span(double data_lo, double data_hi) {
+  if (data_lo > data_hi) std::swap(data_lo, data_hi);
+  const bool positive = data_lo > 0 && std::isfinite(data_hi);
+  return positive && data_hi > 10.0 * data_lo ? AxisScale::log : AxisScale::linear;
+}
+
 namespace {
 
 std::string superscript_integer(int k) {
@@ -105,7 +111,16 @@ std::string format_tick(double value, const AxisTicks& ticks, AxisScale scale) {
   }
   const double magnitude = std::max(std::abs(ticks.lo), std::abs(ticks.hi));
   if (value == 0) return "0";
-  if (magnitude >= 1e7 || magnitude < 1e-4) return format_g(value, 3);
+  if (magnitude < 1e-4) return format_g(value, 3);
+  if (magnitude >= 1e5) {
+    // m×10ᵏ with the axis' exponent: 4000000 → "4×10⁶", 2500000 → "2.5×10⁶".
+    const int k = static_cast<int>(std::floor(std::log10(magnitude) + 1e-9));
+    const double power = std::pow(10.0, k);
+    const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(ticks.step / power) + 1e-9)));
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value / power);
+    return buffer + std::string("×10") + superscript_integer(k);
+  }
   const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(ticks.step) + 1e-9)));
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);

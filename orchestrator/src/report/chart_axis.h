@@ -33,7 +33,12 @@ AxisTicks linear_ticks(double data_lo, double data_hi, int target = 6);
 // range falls back to [1, 10]).
 AxisTicks log_ticks(double data_lo, double data_hi);
 
-// Label for a tick: decimals from the linear step (0.2 → "1158.4"); on log
+// The axis rule of the report: log when the data are positive and span more
+// than a decade (hi/lo > 10), linear otherwise.
+AxisScale scale_for_span(double data_lo, double data_hi);
+
+// Label for a tick: decimals from the linear step (0.2 → "1158.4"), axes
+// reaching 10⁵ or more as m×10ᵏ with the axis' exponent ("2.5×10⁶"); on log
 // axes plain decimals for 1e-4 ≤ v < 1e4 ("0.0002", "1000"), otherwise
 // 10⁻⁵ or 2×10⁵.
 std::string format_tick(double value, const AxisTicks& ticks, AxisScale scale);

@@ -24,21 +24,23 @@ Table cost_table(const std::vector<SeriesSummary>& series, const std::vector<dou
   t.columns = {{"series", {}, false, false},         {"verdict", {}, false, false},
                {"target_rde", "target RDE", false, true}, {"delta_star", "cheapest Δ*", false, true},
                {"cells", {}, false, true},           {"cell_iterations", "cells × iterations", false, true},
-               {"cpu_s", "CPU s", false, true},      {"rde", "its RDE", false, true}};
+               {"cpu_s", "CPU s", false, true},      {"peak_rss_mb", "peak MB", false, true},
+               {"rde", "its RDE", false, true}};
   for (const auto& s : series) {
     if (!s.f0()) continue;  // no extrapolated value, no RDE
     for (double target : targets) {
       const GridPoint* g = cheapest_grid_for(s, target);
       std::vector<Cell> row{text_cell(s.label), text_cell(s.verdict), percent_cell(target)};
       if (!g) {
-        row.push_back(text_cell("none: a finer grid is needed"));
-        for (int k = 0; k < 4; ++k) row.push_back(text_cell(""));
+        row.push_back(text_cell(kNoGridMeetsTarget));
+        for (int k = 0; k < 5; ++k) row.push_back(text_cell(""));
       } else {
         const long long cells = static_cast<long long>(g->nx) * g->ny * g->nz;
         row.push_back(number_cell(g->delta_star, 4));
         row.push_back(integer_cell(cells));
         row.push_back(number_cell(static_cast<double>(cells) * g->iterations, 3));
         row.push_back(number_cell(g->cpu_s, 3));
+        row.push_back(number_cell(g->peak_rss_mb, 3));
         row.push_back(percent_cell(s.extrapolation->grid_at(g->delta_star)->rde));
       }
       t.rows.push_back(std::move(row));

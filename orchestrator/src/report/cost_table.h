@@ -2,7 +2,9 @@
 // converged grid whose RDE (docs/PHYSICS.md §8, a-priori from the series'
 // extrapolation) meets the target, with its CPU time and the
 // machine-independent cost cells × iterations. Cheapest = least CPU time;
-// a target no grid meets says "none: a finer grid is needed".
+// a target no grid meets says "none of the run grids" (a finer grid is
+// needed). Columns: series, verdict, target RDE, cheapest Δ*, cells,
+// cells × iterations, CPU s, peak MB, its RDE.
 #pragma once
 
 #include <vector>
@@ -12,7 +14,8 @@
 
 namespace gridfree {
 
-inline const std::vector<double> kTargetRdes{0.10, 0.05, 0.02, 0.01, 0.005};
+inline constexpr const char* kNoGridMeetsTarget = "none of the run grids";
+inline const std::vector<double> kTargetRdes{0.10, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001};
 
 // One grid of a series that meets `target` at the least CPU time, or null.
 const GridPoint* cheapest_grid_for(const SeriesSummary& s, double target);

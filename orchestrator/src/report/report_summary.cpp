@@ -89,9 +89,10 @@ std::string reading_note(const std::string& section) {
   }
   if (section == "cost.csv") {
     return "For each target RDE, the cheapest converged grid (least CPU time) whose RDE meets it, with "
-           "its cost in CPU seconds (this machine) and in cells × iterations (any machine). RDE is the "
-           "a-priori error estimate U/|f0| of that grid from the series' extrapolation; a target no grid "
-           "meets needs a finer grid.";
+           "its cost in CPU seconds (this machine), in cells × iterations (any machine) and its peak "
+           "memory. RDE is the a-priori error estimate U/|f0| of that grid from the series' "
+           "extrapolation; \"none of the run grids\" means a finer grid is needed. The cheapest grids "
+           "lie on the Pareto front of the \"What a target costs\" charts.";
   }
   if (section == "gci.csv") {
     return "The classic three-grid procedure (apparent order by fixed-point iteration, φ_ext and "

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "report/svg_marker.h"
+#include "report/svg_text.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -50,19 +51,37 @@ AxisTicks axis_ticks(const ChartAxis& axis, std::vector<double> values, int targ
 }
 
 std::string text(double x, double y, const std::string& content, const std::string& extra = {}) {
-  return "<text x=\"" + px(x) + "\" y=\"" + px(y) + "\"" + extra + ">" + xml_escape(content) +
+  return "<text x=\"" + px(x) + "\" y=\"" + px(y) + "\"" + extra + ">" + svg_rich_text(content) +
          "</text>";
-}
-
-std::string truncated(const std::string& label, std::size_t max_chars) {
-  if (label.size() <= max_chars) return label;
-  return label.substr(0, max_chars - 3) + "...";
 }
 
 struct LegendEntry {
   std::string label, colour;
   Marker marker;
-  bool line, dashed, hollow;
+  bool line, dashed, hollow, faded;
+};
+
+// The axis rule (chart_axis.h scale_for_span) applied to an auto_log axis.
+void resolve_scale(ChartAxis& axis, const std::vector<double>& values) {
+  if (!axis.auto_log || values.empty()) return;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  if (scale_for_span(*lo, *hi) != AxisScale::log) return;
+  axis.scale = AxisScale::log;
+  if (axis.min && *axis.min <= 0) axis.min.reset();
+  if (axis.max && *axis.max <= 0) axis.max.reset();
+}
+
+// Label boxes already placed, to keep point labels apart.
+struct LabelBoxes {
+  struct Box { double x0, y0, x1, y1; };
+  std::vector<Box> boxes;
+  bool place(const Box& b) {
+    for (const Box& o : boxes) {
+      if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return false;
+    }
+    boxes.push_back(b);
+    return true;
+  }
 };
 
 }  // namespace
@@ -77,7 +96,24 @@ Marker marker_for(int index) {
   return kMarkers[static_cast<std::size_t>(((index % n) + n) % n)];
 }
 
-std::string render_svg(const Chart& chart) {
+double legend_width(const std::vector<std::string>& labels) {
+  double widest = 0;
+  for (const auto& l : labels) widest = std::max(widest, text_width_px(l, kFont));
+  return labels.empty() ? 0.0 : std::max(110.0, 44.0 + widest);
+}
+
+std::string render_svg(const Chart& given) {
+  Chart chart = given;
+  {
+    std::vector<double> xs, ys;
+    for (const auto& s : chart.series) {
+      for (double v : s.x) if (std::isfinite(v)) xs.push_back(v);
+      for (double v : s.y) if (std::isfinite(v)) ys.push_back(v);
+    }
+    for (const auto& h : chart.hlines) if (std::isfinite(h.y)) ys.push_back(h.y);
+    resolve_scale(chart.x, xs);
+    resolve_scale(chart.y, ys);
+  }
   const std::string id = slugify(chart.id.empty() ? chart.title : chart.id);
   // 1. Axis ranges from the data.
   std::vector<double> xs, ys;
@@ -105,17 +141,18 @@ std::string render_svg(const Chart& chart) {
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
     const auto& s = chart.series[i];
     if (s.name.empty()) continue;
-    legend.push_back({truncated(s.name, 34), palette_colour(s.colour >= 0 ? s.colour : int(i)),
-                      s.marker, s.line, s.dashed, s.hollow});
+    legend.push_back({s.name, palette_colour(s.colour >= 0 ? s.colour : int(i)), s.marker, s.line, s.dashed,
+                      s.hollow, s.faded});
   }
   for (const auto& h : chart.hlines) {
     if (!h.label.empty()) {
-      legend.push_back({truncated(h.label, 34), palette_colour(h.colour), Marker::none, true, h.dashed, false});
+      legend.push_back({h.label, palette_colour(h.colour), Marker::none, true, h.dashed, false, false});
     }
   }
-  std::size_t longest = 0;
-  for (const auto& e : legend) longest = std::max(longest, e.label.size());
-  const double legend_w = legend.empty() ? 0.0 : std::clamp(40.0 + 7.2 * double(longest), 110.0, 280.0);
+  std::vector<std::string> legend_labels;
+  for (const auto& e : legend) legend_labels.push_back(e.label);
+  const double legend_w = legend_width(legend_labels);
+  if (legend_w > 280.0) chart.width += static_cast<int>(std::ceil(legend_w - 280.0));
   const double left = 78, right = chart.width - 16 - legend_w;
   const double top = chart.subtitle.empty() ? 44 : 60;
   const double bottom = chart.height - 66.0;  // room for the x label and a note line
@@ -126,8 +163,8 @@ std::string render_svg(const Chart& chart) {
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << chart.width << "\" height=\""
       << chart.height << "\" viewBox=\"0 0 " << chart.width << " " << chart.height
       << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << kFont
-      << "\" role=\"img\" aria-label=\"" << xml_escape(chart.title) << "\">\n";
-  svg << "<title>" << xml_escape(chart.title) << "</title>\n";
+      << "\" role=\"img\" aria-label=\"" << xml_escape(plain_text(chart.title)) << "\">\n";
+  svg << "<title>" << xml_escape(plain_text(chart.title)) << "</title>\n";
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
   svg << "<defs><clipPath id=\"" << id << "-plot\"><rect x=\"" << px(left) << "\" y=\"" << px(top)
       << "\" width=\"" << px(right - left) << "\" height=\"" << px(bottom - top)
@@ -147,8 +184,10 @@ std::string render_svg(const Chart& chart) {
   for (double v : yt.major) svg << "<path d=\"M" << px(left) << " " << px(my(v)) << "h-5\"/>";
   for (double v : yt.minor) svg << "<path d=\"M" << px(left) << " " << px(my(v)) << "h-3\"/>";
   svg << "</g>\n<g fill=\"#222222\">";
-  for (double v : xt.major) svg << text(mx(v), bottom + 18, format_tick(v, xt, chart.x.scale), " text-anchor=\"middle\"");
-  for (double v : yt.major) svg << text(left - 8, my(v) + 4, format_tick(v, yt, chart.y.scale), " text-anchor=\"end\"");
+  for (double v : xt.major)
+    svg << text(mx(v), bottom + 18, format_tick(v, xt, chart.x.scale) + chart.x.tick_suffix, " text-anchor=\"middle\"");
+  for (double v : yt.major)
+    svg << text(left - 8, my(v) + 4, format_tick(v, yt, chart.y.scale) + chart.y.tick_suffix, " text-anchor=\"end\"");
   svg << "</g>\n";
   svg << text((left + right) / 2, bottom + 38, chart.x.label, " text-anchor=\"middle\"") << "\n";
   const double ymid = (top + bottom) / 2;
@@ -166,6 +205,13 @@ std::string render_svg(const Chart& chart) {
   }
   int offscale = 0;
   std::ostringstream points;
+  LabelBoxes labels;  // markers first, so that point labels avoid them too
+  for (const auto& s : chart.series) {
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()) && s.marker != Marker::none; ++i) {
+      if (mx.contains(s.x[i]) && my.contains(s.y[i]))
+        labels.boxes.push_back({mx(s.x[i]) - 4, my(s.y[i]) - 4, mx(s.x[i]) + 4, my(s.y[i]) + 4});
+    }
+  }
   for (std::size_t si = 0; si < chart.series.size(); ++si) {
     const auto& s = chart.series[si];
     const std::string colour = palette_colour(s.colour >= 0 ? s.colour : int(si));
@@ -201,9 +247,17 @@ std::string render_svg(const Chart& chart) {
       const double x = s.x[i], y = s.y[i];
       const bool no_value = std::isnan(y);
       if (mx.contains(x) && (no_value || my.contains(y))) {
-        points << svg_marker(s.marker, mx(x), no_value ? bottom : my(y), colour, s.hollow) << "\n";
-        if (i < s.point_labels.size() && !s.point_labels[i].empty() && !no_value)
-          points << text(mx(x) + 5, my(y) - 7, s.point_labels[i], " font-size=\"10\" fill=\"#555\"") << "\n";
+        const std::string marker = svg_marker(s.marker, mx(x), no_value ? bottom : my(y), colour, s.hollow);
+        points << (s.faded ? "<g opacity=\"0.35\">" + marker + "</g>" : marker) << "\n";
+        if (i < s.point_labels.size() && !s.point_labels[i].empty() && !no_value) {
+          // Above-right of the point, else below-left, else no label.
+          const double w = text_width_px(s.point_labels[i], 10.0), px0 = mx(x), py0 = my(y);
+          if (labels.place({px0 + 5, py0 - 16, px0 + 5 + w, py0 - 5}))
+            points << text(px0 + 5, py0 - 7, s.point_labels[i], " font-size=\"10\" fill=\"#555\"") << "\n";
+          else if (labels.place({px0 - 5 - w, py0 + 7, px0 - 5, py0 + 18}))
+            points << text(px0 - 5, py0 + 16, s.point_labels[i], " font-size=\"10\" fill=\"#555\" text-anchor=\"end\"")
+                   << "\n";
+        }
         continue;
       }
       ++offscale;
@@ -225,12 +279,14 @@ std::string render_svg(const Chart& chart) {
     for (std::size_t i = 0; i < rows; ++i) {
       const auto& e = legend[i];
       const double ly = top + 10 + 18.0 * double(i);
+      if (e.faded) svg << "<g opacity=\"0.45\">";
       if (e.line) {
         svg << "<path d=\"M" << px(lx) << " " << px(ly) << "h22\" stroke=\"" << e.colour
             << "\" stroke-width=\"1.8\"" << (e.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>";
       }
       svg << svg_marker(e.marker, lx + 11, ly, e.colour, e.hollow);
       svg << text(lx + 28, ly + 4, e.label);
+      if (e.faded) svg << "</g>";
     }
     if (rows < legend.size()) {
       svg << text(lx, top + 10 + 18.0 * double(rows) + 4, "... and " + std::to_string(legend.size() - rows) + " more");

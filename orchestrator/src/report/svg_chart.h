@@ -12,7 +12,12 @@
 //    with its marker on the bottom edge of the plot, never dropped;
 //  - a point outside a fixed axis range is drawn as a small arrow on the
 //    edge it left through, and counted in the note line;
-//  - lines break at NaN values (and at non-positive values on log axes).
+//  - lines break at NaN values (and at non-positive values on log axes);
+//  - text may hold sub/superscript markup "f_{0}" (svg_text.h);
+//  - the legend column is as wide as its longest entry (never truncated):
+//    when it needs more than 280 px the chart grows wider by the excess;
+//  - point labels that would overlap an earlier label are moved to the
+//    other side of their point, or left out when both sides collide.
 #pragma once
 
 #include <optional>
@@ -26,7 +31,7 @@ namespace gridfree {
 enum class Marker { none, circle, square, triangle, diamond, cross, x_mark };
 
 struct ChartSeries {
-  std::string name;               // legend text; empty = not in the legend
+  std::string name;               // legend text (markup allowed); empty = not in the legend
   std::vector<double> x, y;
   std::vector<double> y_error;    // empty, or one half-width per point (≤0/NaN: none)
   Marker marker = Marker::circle;
@@ -46,9 +51,13 @@ struct ChartHLine {
 };
 
 struct ChartAxis {
-  std::string label;
+  std::string label;                // may hold sub/superscript markup (svg_text.h)
   AxisScale scale = AxisScale::linear;
   std::optional<double> min, max;   // fixed limits; otherwise from the data
+  // Log scale when the positive data span more than a decade (chart_axis.h
+  // scale_for_span); a fixed min ≤ 0 is then dropped.
+  bool auto_log = false;
+  std::string tick_suffix = {};     // appended to every tick label, e.g. "%"
 };
 
 struct Chart {
@@ -68,6 +77,9 @@ Marker marker_for(int index);
 
 // The chart as an <svg> element (no XML declaration; add one for a file).
 std::string render_svg(const Chart& chart);
+
+// Width in pixels of the legend column for these entries (markup allowed).
+double legend_width(const std::vector<std::string>& labels);
 
 // render_svg with an XML declaration, for a standalone .svg file.
 std::string render_svg_file(const Chart& chart);

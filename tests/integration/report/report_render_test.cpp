@@ -141,7 +141,7 @@ TEST_F(ReportRender, ChromiumRendersTheSvgCharts) {
   EXPECT_EQ(count_of(text, "<svg"), static_cast<int>(files_.svg.size()));
   EXPECT_GE(count_of(text, "<circle"), 12);  // 6 + 6 converged grids in the Fig. 1 charts
   EXPECT_NE(text.find("<title>Grid-convergence report: render-check</title>"), std::string::npos);
-  EXPECT_NE(text.find("Speed vs accuracy"), std::string::npos);
+  EXPECT_NE(text.find("What a target costs"), std::string::npos);
 }
 
 // Minimal RFC 4180 reader: rows of fields ("" quoting, quoted commas/newlines).
@@ -215,7 +215,10 @@ TEST_F(ReportRender, ChromiumPrintsEveryColumnAndNoteToA4) {
     ++headers;
     EXPECT_NE(text.find(header), std::string::npos) << "column header missing from the PDF: " << header;
   }
-  EXPECT_GT(headers, 40);  // series, differences, gci, failures and grids tables
+  EXPECT_GT(headers, 40);  // series, differences, cost, gci, failures and grids tables
+  // The "what a target costs" table, by name: target → cheapest grid → its cost.
+  for (const char* header : {"targetRDE", "cheapestΔ*", "cells×iterations", "CPUs", "peakMB", "itsRDE"})
+    EXPECT_NE(text.find(header), std::string::npos) << "cost-table column missing from the PDF: " << header;
   const auto rows = read_csv_rows(read(dir_ / "series.csv"));
   ASSERT_EQ(rows.size(), 3u);
   const auto col = std::find(rows[0].begin(), rows[0].end(), "verdict_reasons") - rows[0].begin();

@@ -87,6 +87,14 @@ TEST(SvgChartTicks, TickLabels) {
   const AxisTicks lin = linear_ticks(1158.25, 1159.3, 6);
   EXPECT_EQ(format_tick(1158.5, lin, AxisScale::linear), "1158.5");
   EXPECT_EQ(format_tick(1159.0, lin, AxisScale::linear), "1159.0");
+  // Axes reaching 10⁵: m×10ᵏ with the axis' exponent. 0 … 3.4e6 in about
+  // 6 ticks: raw step 6.8e5 → 1e6, ticks 0 … 4e6.
+  const AxisTicks big = linear_ticks(0, 3.4e6, 6);
+  EXPECT_DOUBLE_EQ(big.step, 1e6);
+  EXPECT_EQ(format_tick(4e6, big, AxisScale::linear), "4×10⁶");
+  const AxisTicks half = linear_ticks(0, 1.8e6, 5);  // raw 4.5e5 → step 5e5
+  EXPECT_EQ(format_tick(1.5e6, half, AxisScale::linear), "1.5×10⁶");
+  EXPECT_EQ(format_tick(0, big, AxisScale::linear), "0");
   const AxisTicks lg = log_ticks(1e-6, 1e5);
   EXPECT_EQ(format_tick(1e-5, lg, AxisScale::log), "10⁻⁵");
   EXPECT_EQ(format_tick(1e4, lg, AxisScale::log), "10⁴");

@@ -146,7 +146,7 @@ TEST(ReportTables, CheapestGridForATargetRde) {
   ASSERT_EQ(t.rows.size(), 4u);  // A and B; C has no extrapolation with U
   EXPECT_EQ(t.rows[0][3].exact, "1.5");
   EXPECT_DOUBLE_EQ(std::stod(t.rows[0][6].exact), 20 / (1.5 * 1.5 * 1.5));
-  EXPECT_EQ(t.rows[1][3].exact, "none: a finer grid is needed");
+  EXPECT_EQ(t.rows[1][3].exact, "none of the run grids");
 }
 
 // B's chosen fit is the mixed one: its power law is drawn faded and

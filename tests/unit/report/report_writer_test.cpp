@@ -93,7 +93,7 @@ class ReportWriter : public ::testing::Test {
 
 TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
   for (const char* name : {"report.md", "report.html", "grids.csv", "series.csv", "differences.csv", "gci.csv",
-                           "cost.csv", "failures.csv", "fig2_rde.svg", "speed_accuracy.svg",
+                           "cost.csv", "failures.csv", "fig2_rde.svg", "speed_accuracy.svg", "speed_accuracy_work.svg",
                            "fig1_01_PC1_superbee_fwhm6_bvk.svg", "gci_01_PC1_superbee_fwhm6_bvk.svg",
                            "fig1_02_PC1_superbee_fwhm6_hkl.svg", "fig1_03_PC2_superbee_fwhm6_bvk.svg",
                            "gci_03_PC2_superbee_fwhm6_bvk.svg"}) {
@@ -113,7 +113,7 @@ TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
     }
     EXPECT_NE(read(dir_ / "report.html").find("fig2_rde.pdf"), std::string::npos);
   }
-  EXPECT_EQ(files_.svg.size(), 2u + 3u + 3u);  // overview + per-series fig1 + gci
+  EXPECT_EQ(files_.svg.size(), 3u + 3u + 3u);  // overview (RDE, 2 × cost) + per-series fig1 + gci
   for (const auto& entry : fs::directory_iterator(dir_)) {
     EXPECT_NE(entry.path().filename().string().front(), '.') << "left over: " << entry.path();
   }

@@ -1,0 +1,25 @@
+// Pieces shared by the report's chart builders (chart_series.cpp,
+// chart_rde.cpp, chart_gci.cpp, chart_pareto.cpp).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "report/series_summary.h"
+#include "report/svg_chart.h"
+
+namespace gridfree {
+
+// "01_PC1_superbee_fwhm6_bvk": the series' file-name stem.
+std::string series_slug(const SeriesSummary& s, std::size_t index);
+// " (incomplete)" while grids are pending, else "".
+std::string title_suffix(const SeriesSummary& s);
+// The Δ* axis: linear from 0, log when the grids span more than a decade.
+ChartAxis delta_star_axis(std::string label = "Δ* (cell size / particle diameter)");
+// U of the series' finest grid (the f0 ± U the report quotes), if any.
+std::optional<double> finest_u(const SeriesSummary& s);
+// "f_{0} = 1017.0 ± 1.5": f0 rounded to the digits U supports (text_format.h).
+std::string f0_label(const SeriesSummary& s);
+
+}  // namespace gridfree

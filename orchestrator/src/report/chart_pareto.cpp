@@ -1,0 +1,87 @@
+// Pareto front of cost against a-priori RDE (see chart_pareto.h).
+#include "report/chart_pareto.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "report/chart_common.h"
+#include "report/text_format.h"
+
+namespace gridfree {
+
+std::vector<std::size_t> pareto_front(const std::vector<CostPoint>& points) {
+  auto finite = [](const CostPoint& p) { return std::isfinite(p.rde) && std::isfinite(p.cost); };
+  auto dominates = [](const CostPoint& q, const CostPoint& p) {
+    return q.rde <= p.rde && q.cost <= p.cost && (q.rde < p.rde || q.cost < p.cost);
+  };
+  std::vector<std::size_t> front;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!finite(points[i])) continue;
+    const bool dominated = std::any_of(points.begin(), points.end(), [&](const CostPoint& q) {
+      return finite(q) && dominates(q, points[i]);
+    });
+    if (!dominated) front.push_back(i);
+  }
+  std::sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) {
+    return points[a].rde != points[b].rde ? points[a].rde < points[b].rde : points[a].cost < points[b].cost;
+  });
+  return front;
+}
+
+double grid_cost(const GridPoint& g, CostMeasure measure) {
+  if (measure == CostMeasure::cpu_seconds) return g.cpu_s;
+  return static_cast<double>(g.nx) * g.ny * g.nz * g.iterations;
+}
+
+Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure measure) {
+  const bool cpu = measure == CostMeasure::cpu_seconds;
+  Chart chart;
+  chart.id = cpu ? "speed-accuracy" : "speed-accuracy-work";
+  chart.title = cpu ? "What a target costs: CPU time against RDE" : "What a target costs: cells × iterations against RDE";
+  chart.subtitle = "each converged grid at its a-priori RDE = U_{i}/|f_{0}|; the Pareto front connected, dominated grids faded";
+  chart.x = {"RDE (a priori, %)", AxisScale::linear, 0.0, std::nullopt};
+  chart.x.auto_log = true;
+  chart.x.tick_suffix = "%";
+  chart.y = {cpu ? "CPU time (s, this machine)" : "cells × outer iterations", AxisScale::linear, 0.0, std::nullopt};
+  chart.y.auto_log = true;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const auto& s = series[i];
+    if (!s.extrapolation || !s.f0()) continue;
+    std::vector<CostPoint> points;
+    std::vector<double> h;
+    for (const GridPoint& g : s.series.grids) {
+      const ExtrapolatedGrid* e = is_converged(g) ? s.extrapolation->grid_at(g.delta_star) : nullptr;
+      if (!e || !e->rde) continue;
+      points.push_back({*e->rde * 100.0, grid_cost(g, measure)});
+      h.push_back(g.delta_star);
+    }
+    const auto front = pareto_front(points);
+    ChartSeries on{s.label + title_suffix(s), {}, {}, {}, marker_for(int(i)), true, false, false, int(i)};
+    ChartSeries off{"", {}, {}, {}, marker_for(int(i)), false, false, false, int(i)};
+    off.faded = true;
+    for (std::size_t k : front) {
+      on.x.push_back(points[k].rde);
+      on.y.push_back(points[k].cost);
+      on.point_labels.push_back("Δ* " + format_g(h[k], 3));
+    }
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if (std::find(front.begin(), front.end(), k) != front.end()) continue;
+      off.x.push_back(points[k].rde);
+      off.y.push_back(points[k].cost);
+    }
+    if (!on.x.empty()) chart.series.push_back(on);
+    if (!off.x.empty()) chart.series.push_back(off);
+  }
+  if (chart.series.empty()) {
+    chart.note = "No series has an uncertainty yet (needs 4 converged grids).";
+  } else {
+    chart.series.push_back({"faded: dominated grid", {}, {}, {},
+                            Marker::circle, false, false, false, 7});
+    chart.series.back().faded = true;
+    chart.note = "For a target RDE, the cheapest grid is the lowest front point left of it (table \"What a target costs\").";
+  }
+  return chart;
+}
+
+}  // namespace gridfree

@@ -1,0 +1,32 @@
+// RDE vs Δ* of every series (see chart_rde.h).
+#include "report/chart_rde.h"
+
+#include "report/chart_common.h"
+
+namespace gridfree {
+
+Chart rde_chart(const std::vector<SeriesSummary>& series) {
+  Chart chart;
+  chart.id = "fig2-rde";
+  chart.title = "Relative discretization error bound RDE = U/|f_{0}|";
+  chart.subtitle = "series with at least 4 converged grids; log axes when the data span more than a decade";
+  chart.x = delta_star_axis();
+  chart.y = {"RDE (%)", AxisScale::linear, 0.0, std::nullopt};
+  chart.y.auto_log = true;
+  chart.y.tick_suffix = "%";
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const auto& s = series[i];
+    if (!s.extrapolation) continue;
+    ChartSeries c{s.label + title_suffix(s), {}, {}, {}, marker_for(int(i)), true, false, false, int(i)};
+    for (const auto& g : s.extrapolation->grids) {
+      if (!g.rde) continue;
+      c.x.push_back(g.h);
+      c.y.push_back(*g.rde * 100.0);
+    }
+    if (!c.x.empty()) chart.series.push_back(c);
+  }
+  if (chart.series.empty()) chart.note = "No series has an uncertainty yet (needs 4 converged grids).";
+  return chart;
+}
+
+}  // namespace gridfree
