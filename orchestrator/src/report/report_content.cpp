@@ -38,6 +38,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.grids_table = {"grids.csv", "Every grid", grids_table(c.series)};
   c.failures_table = {"failures.csv", "Failures", failures_table(c.series)};
   c.charts = report_charts(c.series);
+  c.ensembles = ensemble_section(c.series, data.ensembles);
   return c;
 }
 

@@ -10,6 +10,7 @@
 #include "report/extrapolator.h"
 #include "report/report_charts.h"
 #include "report/report_data.h"
+#include "report/report_ensembles.h"
 #include "report/series_summary.h"
 #include "report/table.h"
 
@@ -27,6 +28,7 @@ struct ReportContent {
   std::vector<SeriesDifference> differences;
   NamedTable series_table, differences_table, cost_table, gci_table, grids_table, failures_table;
   std::vector<NamedChart> charts;
+  EnsembleSection ensembles;               // empty without ensembles (report_ensembles.h)
   std::string export_note;                 // why charts have no PDF/PNG copies, if they have none
 
   // Counts over all grids of all series.

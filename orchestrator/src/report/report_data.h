@@ -2,6 +2,7 @@
 // and handed to the report writer (which never touches SQLite itself).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@ struct StudyReportData {
   std::vector<std::string> generator_kinds;
   bool export_charts = true;         // PDF/PNG beside every SVG (report/chart_export.h)  // particle generators of the study's cases (report_about.h)
   std::vector<SeriesData> series;
+  std::map<std::string, std::vector<std::string>> ensembles;  // name → instance cases (report_ensembles.h)
 };
 
 }  // namespace gridfree

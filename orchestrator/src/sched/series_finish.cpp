@@ -9,6 +9,7 @@
 #include "core/version.h"
 #include "extrap/verdict.h"
 #include "report/report.h"
+#include "store/store_ensembles.h"
 
 namespace gridfree {
 namespace {
@@ -190,6 +191,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   d.p_low = settings.p_low;
   d.p_high = settings.p_high;
   d.generator_kinds = generator_kinds(store.study_definition(study_id));
+  d.ensembles = study_ensembles(store.db(), study_id);
   for (const auto& s : store.series_of_study(study_id)) {
     SeriesData sd;
     sd.id = s.id;

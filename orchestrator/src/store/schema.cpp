@@ -8,6 +8,8 @@
 
 #include <string>
 
+#include "store/schema_ensembles.h"
+
 namespace gridfree {
 namespace {
 
@@ -286,6 +288,7 @@ void migrate(Database& db) {
   if (v < 2) db.exec(kV2NominalDeltaStar);
   if (v < 3) db.exec(kV3SlurmState);
   if (v < 4) db.exec(kV4SeriesVerdict);
+  if (v < 5) db.exec(kV5Ensembles);  // ensembles (store/schema_ensembles.h)
   db.exec("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   tx.commit();
 }

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "job/job_spec.h"
+#include "study/study_ensembles.h"
 
 namespace gridfree {
 
@@ -60,6 +61,7 @@ struct Study {
   std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}
   nlohmann::json numerics = nlohmann::json::object();  // merged into every job
   ExtrapolationSettings extrapolation;
+  Ensembles ensembles;              // name → instance cases (study_ensembles.h)
 
   const StudyCase* find_case(const std::string& name) const;
   std::string design_description() const;  // "factorial" or "one_at_a_time (baseline ...)"
