@@ -4,6 +4,7 @@
 //   spread (constant in Δ*: they are differences of extrapolated values)
 #include "report/report_ensembles.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "report/text_format.h"
@@ -40,7 +41,11 @@ Chart ensemble_budget_chart(const std::string& ensemble, const std::vector<Ensem
     }
     if (!s.x.empty()) chart.series.push_back(s);
     if (spread) chart.hlines.push_back({*spread * 100.0, "instance spread s/|mean| " + name, k, true});
-    if (model) chart.hlines.push_back({*model * 100.0, "model form (" + pair + ") " + name, k, true});
+    // A model-form pair is the same line for both of its configurations: drawn once.
+    const std::string model_label = "model form (" + pair + ")";
+    const bool drawn = std::any_of(chart.hlines.begin(), chart.hlines.end(),
+                                   [&](const ChartHLine& l) { return l.label == model_label; });
+    if (model && !drawn) chart.hlines.push_back({*model * 100.0, model_label, k, true});
     ++k;
   }
   if (chart.series.empty() && chart.hlines.empty())
