@@ -13,6 +13,7 @@
 #include "report/atomic_file.h"
 #include "report/chart_export.h"
 #include "report/report_content.h"
+#include "report/report_ensembles.h"
 
 namespace gridfree {
 
@@ -64,6 +65,7 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
     files.csv.push_back(out_dir / content.alignment_table.file);
     write_file_atomically(files.csv.back(), to_csv(content.alignment_table.table));
   }
+  write_ensemble_files(content.ensembles, out_dir, files);  // ensembles.csv, budget.csv, budget_*.svg
   const auto converter = data.export_charts ? find_svg_converter() : std::filesystem::path();
   if (data.export_charts && converter.empty()) {
     content.export_note = "PDF and PNG copies of the charts were not written: rsvg-convert is not installed "

@@ -11,6 +11,7 @@
 #include "report/report_alignment.h"
 #include "report/report_charts.h"
 #include "report/report_data.h"
+#include "report/report_ensembles.h"
 #include "report/series_summary.h"
 #include "report/table.h"
 
@@ -30,6 +31,7 @@ struct ReportContent {
   std::vector<NamedChart> charts;
   std::vector<AlignmentLine> alignment;    // empty unless the study ran the alignment check
   NamedTable alignment_table;
+  EnsembleSection ensembles;               // empty without ensembles (report_ensembles.h)
   std::string export_note;                 // why charts have no PDF/PNG copies, if they have none
 
   // Counts over all grids of all series.

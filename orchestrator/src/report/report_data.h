@@ -2,6 +2,7 @@
 // and handed to the report writer (which never touches SQLite itself).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ struct StudyReportData {
   std::vector<SeriesData> series;
   std::vector<std::string> adaptive_decisions;  // adaptive series: every decision in order (report/adaptive_section.h)
   std::vector<AlignmentGrid> alignment;  // the study's alignment check, if it has one (report_alignment.h)
+  std::map<std::string, std::vector<std::string>> ensembles;  // name → instance cases (report_ensembles.h)
 };
 
 }  // namespace gridfree

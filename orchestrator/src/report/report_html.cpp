@@ -136,6 +136,7 @@ std::string render_html(const ReportContent& c) {
   out += verdict_section(c);
   out += adaptive_section_html(c.data.adaptive_decisions);
   out += about_section(c);
+  out += ensembles_html(c);
   out += table_section(c.series_table, "series", "No series.");
   out += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
   out += table_section(c.cost_table, "cost", "No series has an extrapolation yet.");

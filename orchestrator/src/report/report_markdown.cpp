@@ -48,6 +48,7 @@ std::string render_markdown(const ReportContent& c) {
     out += "## " + a.title + "\n\n";
     for (const auto& p : a.paragraphs) out += p + "\n\n";
   }
+  out += ensembles_markdown(c);
   out += table_section(c.series_table, "No series.");
   out += table_section(c.differences_table, "No two series differ in exactly one factor.");
   out += table_section(c.cost_table, "No series has an extrapolation yet.");

@@ -11,6 +11,7 @@
 #include "report/report.h"
 #include "sched/adaptive_series.h"
 #include "store/store_alignment.h"
+#include "store/store_ensembles.h"
 
 namespace gridfree {
 namespace {
@@ -194,6 +195,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   d.p_high = settings.p_high;
   d.generator_kinds = generator_kinds(store.study_definition(study_id));
   for (const auto& e : adaptive_events(store, study_id)) d.adaptive_decisions.push_back(e.message);
+  d.ensembles = study_ensembles(store.db(), study_id);
   for (const auto& s : store.series_of_study(study_id)) {
     SeriesData sd;
     sd.id = s.id;

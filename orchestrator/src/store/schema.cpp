@@ -1,6 +1,6 @@
-// Schema version 7 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
+// Schema version 8 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
 // state; 4: series verdicts; 5: series transfer columns; 6: alignment check;
-// 7: adaptive series). Status words (docs/INTERFACE.md §5):
+// 7: adaptive series; 8: ensembles). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <string>
+
+#include "store/schema_ensembles.h"
 
 namespace gridfree {
 namespace {
@@ -321,6 +323,7 @@ void migrate(Database& db, int target) {
   if (v < 5 && target >= 5) migrate_series_transfer(db);  // transfer columns (schema_transfer.cpp)
   if (v < 6 && target >= 6) migrate_alignment(db);        // alignment check (schema_alignment.cpp)
   if (v < 7 && target >= 7) db.exec(kV7AdaptiveSeries);
+  if (v < 8 && target >= 8) db.exec(kV8Ensembles);  // ensembles (store/schema_ensembles.h)
   if (v < 5 && target >= 5) {
     auto fk = db.prepare("PRAGMA foreign_key_check");
     if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);

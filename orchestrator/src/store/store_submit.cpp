@@ -1,6 +1,7 @@
 // Store: opening, submitting a study (one transaction), cancelling.
 #include "core/input_error.h"
 #include "store/schema.h"
+#include "store/store_ensembles.h"
 #include "store/store.h"
 #include "store/store_alignment.h"
 
@@ -75,6 +76,7 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
       .run();
   out.study_id = db_.last_insert_rowid();
   out.created = true;
+  insert_ensembles(db_, out.study_id, study.ensembles);
 
   std::vector<long long> series_ids;
   auto ins_series = db_.prepare(

@@ -18,6 +18,7 @@
 
 #include "job/job_spec.h"
 #include "study/adaptive_grids.h"
+#include "study/study_ensembles.h"
 
 namespace gridfree {
 
@@ -78,6 +79,7 @@ struct Study {
   nlohmann::json numerics = nlohmann::json::object();  // merged into every job
   ExtrapolationSettings extrapolation;
   std::optional<AlignmentOption> alignment;  // off unless the study asks
+  Ensembles ensembles;              // name → instance cases (study_ensembles.h)
 
   const StudyCase* find_case(const std::string& name) const;
   std::string design_description() const;  // "factorial" or "one_at_a_time (baseline ...)"

@@ -434,6 +434,7 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   parse_grids(doc, s, problems);
   parse_alignment(doc, s, problems);  // study_alignment.cpp
   parse_extrapolation(doc, s, problems);
+  parse_ensembles(doc, s, problems);
   if (problems.empty()) check_grids(s, problems);
   if (problems.empty()) check_jobs(s, problems);
   problems.throw_if_any();

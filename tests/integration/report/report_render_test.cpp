@@ -230,5 +230,50 @@ TEST_F(ReportRender, ChromiumPrintsEveryColumnAndNoteToA4) {
   }
 }
 
+
+// An ensemble of three instances (f0 offsets 0, 2, 7) under two drag laws:
+// the Ensembles section's budget chart is drawn by Chromium with its
+// curves, and its tables are in the DOM.
+TEST(ReportRenderEnsembles, ChromiumRendersTheBudgetChart) {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (apt-get install chromium)";
+  StudyReportData d = first_order_study();
+  d.study_name = "render-ensemble";
+  d.series.clear();
+  long long id = 0;
+  for (const char* drag : {"bvk", "hkl"}) {
+    for (int k : {0, 2, 7}) {
+      SeriesData series{++id, "t" + std::to_string(k), "superbee", drag, "diffusion", 6, "done", {}};
+      for (double h : {3.0, 2.5, 2.0, 1.5, 1.0, 0.75}) {
+        GridPoint g;
+        g.delta_star = h;
+        g.nx = g.ny = g.nz = static_cast<int>(std::lround(10 / h));
+        g.status = "converged";
+        g.dp_star = (drag[0] == 'b' ? 1000.0 : 1300.0) + k + 0.8 * h + 0.05 * h * h;
+        series.grids.push_back(g);
+      }
+      d.series.push_back(series);
+    }
+  }
+  d.ensembles = {{"snap", {"t0", "t2", "t7"}}};
+  const fs::path dir = fs::path(::testing::TempDir()) / ("gridfree-render-ens-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const ReportFiles files = write_study_report(d, dir);
+  ASSERT_TRUE(fs::exists(dir / "budget_snap.svg"));
+  const fs::path dom = dir / "dom.html";
+  const std::string cmd = "timeout 120 " + chromium +
+                          " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+                          " --disable-background-networking --disable-component-update --disable-sync"
+                          " --user-data-dir='" + (dir / "profile").string() + "' --dump-dom 'file://" +
+                          fs::absolute(files.html).string() + "' > '" + dom.string() + "' 2>/dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const std::string text = read(dom);
+  EXPECT_EQ(count_of(text, "<svg"), static_cast<int>(files.svg.size()));
+  EXPECT_NE(text.find("Ensembles and uncertainty budget"), std::string::npos);
+  EXPECT_NE(text.find("Uncertainty budget, ensemble snap"), std::string::npos);
+  EXPECT_NE(text.find("instance spread s/|mean|"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace gridfree

@@ -1,0 +1,119 @@
+// Uncertainty budget of an ensemble (see ensemble_budget.h).
+#include "report/ensemble_budget.h"
+
+#include "report/differences.h"
+#include "report/text_format.h"
+
+namespace gridfree {
+
+std::vector<ModelFormDifference> model_form_differences(const std::vector<EnsembleConfig>& configs) {
+  std::vector<ModelFormDifference> out;
+  for (std::size_t a = 0; a < configs.size(); ++a) {
+    for (std::size_t b = a + 1; b < configs.size(); ++b) {
+      const auto& x = configs[a];
+      const auto& y = configs[b];
+      if (x.ensemble != y.ensemble || x.convection != y.convection || x.deposition != y.deposition) continue;
+      const bool drag = x.drag != y.drag, fwhm = x.fwhm_dp != y.fwhm_dp;
+      if (drag == fwhm) continue;  // neither or both differ
+      ModelFormDifference d;
+      d.a = a;
+      d.b = b;
+      d.factor = drag ? "drag" : "fwhm_dp";
+      d.value_a = drag ? x.drag : format_g(x.fwhm_dp, 10);
+      d.value_b = drag ? y.drag : format_g(y.fwhm_dp, 10);
+      if (x.f0 && y.f0) d.relative = relative_difference(x.f0->mean, y.f0->mean);
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
+std::string dominant_source(const std::optional<double>& d, const std::optional<double>& m,
+                            const std::optional<double>& s) {
+  std::string best;
+  double value = -1;
+  for (const auto& [name, v] : {std::pair{"discretization", d}, std::pair{"model form", m}, std::pair{"instance spread", s}}) {
+    if (v && *v > value) {
+      value = *v;
+      best = name;
+    }
+  }
+  return best;
+}
+
+std::vector<BudgetRow> budget_rows(const std::vector<EnsembleConfig>& configs,
+                                   const std::vector<ModelFormDifference>& differences) {
+  std::vector<BudgetRow> out;
+  for (std::size_t c = 0; c < configs.size(); ++c) {
+    std::optional<double> m;
+    std::string pair;
+    for (const auto& d : differences) {
+      if ((d.a != c && d.b != c) || !d.relative) continue;
+      if (!m || *d.relative > *m) {
+        m = d.relative;
+        pair = d.factor + " " + d.value_a + " vs " + d.value_b;
+      }
+    }
+    const auto s = configs[c].f0 ? configs[c].f0->relative_sd() : std::nullopt;
+    for (const auto& g : configs[c].grids) {
+      BudgetRow r;
+      r.config = c;
+      r.delta_star = g.delta_star;
+      if (g.rde_stats) r.discretization = g.rde_stats->mean;
+      r.model_form = m;
+      r.model_form_pair = pair;
+      r.spread = s;
+      r.dominant = dominant_source(r.discretization, r.model_form, r.spread);
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+std::string numbers(const BudgetRow& r) {
+  std::string out;
+  auto add = [&](const char* name, const std::optional<double>& v) {
+    if (!v) return;
+    if (!out.empty()) out += ", ";
+    out += std::string(name) + " " + format_percent(v, 2);
+  };
+  add("discretization", r.discretization);
+  add("model form", r.model_form);
+  add("instance spread", r.spread);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> budget_sentences(const std::vector<EnsembleConfig>& configs,
+                                          const std::vector<BudgetRow>& rows) {
+  std::vector<std::string> out;
+  for (std::size_t c = 0; c < configs.size(); ++c) {
+    std::vector<const BudgetRow*> mine;
+    for (const auto& r : rows)
+      if (r.config == c && !r.dominant.empty()) mine.push_back(&r);
+    if (mine.empty()) continue;
+    std::string text = configs[c].label() + ": ";
+    std::size_t i = 0;
+    bool first = true;
+    while (i < mine.size()) {
+      std::size_t j = i;
+      while (j + 1 < mine.size() && mine[j + 1]->dominant == mine[i]->dominant) ++j;
+      if (!first) text += "; ";
+      first = false;
+      const std::string range = i == j ? "at Δ* " + format_g(mine[i]->delta_star, 3)
+                                       : "for Δ* " + format_g(mine[i]->delta_star, 3) + "–" +
+                                             format_g(mine[j]->delta_star, 3);
+      text += mine[i]->dominant + " dominates " + range + " (at Δ* " + format_g(mine[i]->delta_star, 3) + ": " +
+              numbers(*mine[i]) + ")";
+      i = j + 1;
+    }
+    if (!mine.front()->model_form_pair.empty()) text += "; model form = " + mine.front()->model_form_pair;
+    out.push_back(text + ".");
+  }
+  return out;
+}
+
+}  // namespace gridfree
