@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "job/memory_estimate.h"
 #include "scratch_dir.h"
 
 namespace {
@@ -55,11 +56,12 @@ TEST(BudgetCli, SixtyPercentJobsNeverOverlapAndSmallJobsBackfill) {
   const auto study = write_study(dir);
   // Big job: round(30/0.3) × round(200/0.3) × round(10/0.3) cells; the
   // budget makes its estimate 60 % of it.
-  // The worker's model (job/memory_estimate.h): 750 B/cell + 64 MiB.
-  const double big = 750.0 * 100 * 667 * 33 + 64.0 * 1024 * 1024;
+  // The worker's model (job/memory_estimate.h): B/cell · N + base.
+  const double big = gridfree::kWorkerBytesPerCell * 100 * 667 * 33 + gridfree::kWorkerBaseBytes;
   const double budget = big / 0.6;
   const fs::path times = dir / "times.txt";
   const std::string cmd = "cd " + quote(dir.string()) + " && GRIDFREE_WORKER=" + quote(kFake.string()) +
+                          " GRIDFREE_FAKE_BYTES_PER_CELL=" + std::to_string(gridfree::kWorkerBytesPerCell) +
                           " GRIDFREE_FAKE_S_PER_GIB=1.5 GRIDFREE_FAKE_TIMES=" + quote(times.string()) + " " +
                           quote((fs::path(GRIDFREE_BIN_DIR) / "gridfree").string()) + " run " +
                           quote(study.string()) + " -j 4 --memory-budget " +
