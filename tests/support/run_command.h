@@ -19,6 +19,13 @@ struct CommandRun {
   std::string err;     // stderr
 };
 
+// `s` as one single-quoted /bin/sh word.
+inline std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
 // `command` through /bin/sh; stderr goes through `stderr_file` (overwritten).
 inline CommandRun run_command(const std::string& command, const std::filesystem::path& stderr_file) {
   CommandRun r;

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "job/memory_estimate.h"
+#include "run_command.h"
 #include "scratch_dir.h"
 
 namespace {
@@ -25,11 +26,8 @@ namespace fs = std::filesystem;
 const fs::path kSource = GRIDFREE_SOURCE_DIR;
 const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using gridfree::test_support::shell_quote;
+std::string quote(const std::string& s) { return shell_quote(s); }
 
 struct Interval {
   double start = 0, end = 0, bytes = 0;

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "run_command.h"
 #include "scratch_dir.h"
 
 namespace {
@@ -27,11 +28,8 @@ const fs::path kSource = GRIDFREE_SOURCE_DIR;
 const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
 const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using gridfree::test_support::shell_quote;
+std::string quote(const std::string& s) { return shell_quote(s); }
 
 std::string capture(const std::string& cmd, int* code = nullptr) {
   std::string out;

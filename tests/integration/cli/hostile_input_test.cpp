@@ -25,11 +25,8 @@ using gridfree::test_support::CommandRun;
 const fs::path kSource = GRIDFREE_SOURCE_DIR;
 const fs::path kCorpus = kSource / "tests/fixtures/hostile";
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using gridfree::test_support::shell_quote;
+std::string quote(const std::string& s) { return shell_quote(s); }
 
 // Runs and measures; the bound is generous against machine load but far below
 // the minutes the unbounded checks took.

@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "run_command.h"
 #include "scratch_dir.h"
 
 extern char** environ;
@@ -33,11 +34,8 @@ const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
 fs::path temp_dir(const std::string& name) { return gridfree::test_support::fresh_scratch_dir("cli_test", name); }
 
 // Single-quoted for the shell ('\'' inside).
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using gridfree::test_support::shell_quote;
+std::string quote(const std::string& s) { return shell_quote(s); }
 
 struct Output {
   int code = -1;

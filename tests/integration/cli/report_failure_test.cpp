@@ -18,11 +18,8 @@ namespace fs = std::filesystem;
 const fs::path kSource = GRIDFREE_SOURCE_DIR;
 const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using gridfree::test_support::shell_quote;
+std::string quote(const std::string& s) { return shell_quote(s); }
 
 fs::path study_file(const fs::path& dir) {
   std::ifstream in(kSource / "studies/quickstart.json");

@@ -39,11 +39,8 @@ const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
 const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
 const fs::path kCluster = kSource / "tests/integration/slurm/slurm_cluster.sh";
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using gridfree::test_support::shell_quote;
+std::string quote(const std::string& s) { return shell_quote(s); }
 
 std::vector<std::string> lines_of(const fs::path& file) {
   std::vector<std::string> out;
