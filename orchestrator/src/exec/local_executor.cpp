@@ -210,6 +210,7 @@ std::optional<JobExit> LocalExecutor::reap_one() {
     } else if (it->second.timed_out) {
       e.how = JobExit::How::kTimedOut;
       e.detail = "no result after " + std::to_string(static_cast<long>(it->second.timeout_s)) + " s";
+      if (WIFEXITED(status)) e.code = WEXITSTATUS(status);  // 130: stopped with a checkpoint
     } else if (WIFEXITED(status)) {
       e.how = JobExit::How::kExited;
       e.code = WEXITSTATUS(status);
