@@ -137,8 +137,8 @@ TEST(RunTimeoutResume, ATimedOutJobResumesFromItsCheckpointWithoutSpendingAnAtte
   RecordProperty("resumed_from_iteration", k);
   RecordProperty("timeout_stops", stops);
   std::printf("uninterrupted: %d iterations, %.2f s; timeout %.2f s: %d stop(s), last checkpoint at %d, "
-              "resumed for %d; dp* %.12g vs %.12g\n",
-              n_ref, wall_ref, timeout_s, stops, k, n - k, dp, dp_ref);
+              "resumed for %d; dp* %.12g vs %.12g (relative difference %.3g)\n",
+              n_ref, wall_ref, timeout_s, stops, k, n - k, dp, dp_ref, std::fabs(dp - dp_ref) / std::fabs(dp_ref));
 }
 
 }  // namespace
