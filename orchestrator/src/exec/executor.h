@@ -41,7 +41,7 @@ struct JobExit {
   enum class How { kExited, kSignaled, kTimedOut, kKilled, kLaunchFailed, kLost, kRefused, kVanished };
   long long job_id = 0;
   How how = How::kExited;
-  int code = 0;                    // exit code (kExited)
+  int code = 0;                    // exit code (kExited; kTimedOut when the worker exited by itself)
   int signal = 0;                  // kSignaled
   std::string detail;              // what happened, in words
   std::filesystem::path run_dir;

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -209,7 +210,10 @@ std::optional<JobExit> LocalExecutor::reap_one() {
       e.detail = std::strerror(errno);
     } else if (it->second.timed_out) {
       e.how = JobExit::How::kTimedOut;
-      e.detail = "no result after " + std::to_string(static_cast<long>(it->second.timeout_s)) + " s";
+      char after[64];
+      std::snprintf(after, sizeof after, "no result after %g s", it->second.timeout_s);
+      e.detail = after;
+      if (WIFEXITED(status)) e.code = WEXITSTATUS(status);  // 130: stopped with a checkpoint
     } else if (WIFEXITED(status)) {
       e.how = JobExit::How::kExited;
       e.code = WEXITSTATUS(status);

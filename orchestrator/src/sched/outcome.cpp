@@ -94,6 +94,15 @@ JobOutcome classify_exit(const JobExit& e) {
     out.row.reason = describe(e);
     return out;
   }
+  if (e.how == JobExit::How::kTimedOut && e.code == 130 && checkpoint_from_this_attempt(e)) {
+    // Our timeout's SIGTERM, answered with a checkpoint: the work is kept and
+    // the next attempt continues from it, so no attempt is spent. Each such
+    // stop advances the checkpoint by at least one outer iteration, so a job
+    // still ends, at the latest at numerics.max_iterations.
+    out.kind = OutcomeKind::kReleased;
+    out.row.reason = describe(e) + "; checkpoint kept, the next attempt resumes from it";
+    return out;
+  }
   if (e.how != JobExit::How::kExited) {
     out.kind = OutcomeKind::kRetryable;
     out.row.reason = describe(e) + log_tail();

@@ -6,8 +6,9 @@
 //   exit 1, other codes, a signal, a timeout,
 //   a missing or garbage result file     → retryable (one more attempt, then failed)
 //   exit 130 with a checkpoint written
-//   during this attempt (Slurm pre-emption,
-//   a SIGTERM from outside)              → released (the next attempt resumes from it)
+//   during this attempt (our timeout,
+//   Slurm pre-emption, a SIGTERM from
+//   outside)                             → released (the next attempt resumes from it)
 //   killed by our own shutdown, or gone
 //   without a trace while nobody watched → released (queued again, attempt not spent)
 //   refused by the cluster (bad partition,

@@ -100,6 +100,7 @@ TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
   ex.start(launch(root, 8, "checkpoint", 0.5));
   const auto e = wait_for(ex);
   EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  EXPECT_EQ(e.code, 130);  // its own exit: the scheduler releases it (sched/outcome.h)
   EXPECT_TRUE(fs::exists(checkpoint_file(e.run_dir)));
   EXPECT_LT(e.wall_s, 5.0);  // well before the 30 s grace: it ended on SIGTERM
 }
@@ -112,6 +113,7 @@ TEST(LocalExecutor, TimeoutEndsAWorkerIgnoringSigtermAfterTheGrace) {
   const auto e = wait_for(ex);
   EXPECT_EQ(e.how, JobExit::How::kTimedOut);
   EXPECT_GE(e.wall_s, 0.8);  // timeout + grace
+  EXPECT_EQ(e.code, 0);      // SIGKILLed: no exit code of its own
   EXPECT_FALSE(fs::exists(checkpoint_file(e.run_dir)));
 }
 

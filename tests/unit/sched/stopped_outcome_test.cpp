@@ -1,6 +1,7 @@
 // Exit 130 of a worker (sched/outcome.h): stopped with a checkpoint written
 // during this attempt → released (the next attempt resumes, no attempt
-// spent); without one → retryable; our own timeout → retryable.
+// spent), also when our own timeout sent the SIGTERM; without one, or killed
+// after the grace period → retryable.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -35,12 +36,25 @@ TEST(StoppedOutcome, NoCheckpointOrAnOldOneIsRetryable) {
   EXPECT_EQ(classify_exit(exit_130(dir)).kind, OutcomeKind::kRetryable);  // from an earlier attempt
 }
 
-TEST(StoppedOutcome, OurTimeoutIsRetryableEvenWithACheckpoint) {
+TEST(StoppedOutcome, OurTimeoutAnsweredWithACheckpointReleasesTheJob) {
   const auto dir = test_support::fresh_scratch_dir("stopped_outcome", "timeout");
   std::ofstream(checkpoint_file(dir)) << "x";
   JobExit e = exit_130(dir);
   e.how = JobExit::How::kTimedOut;
+  EXPECT_EQ(classify_exit(e).kind, OutcomeKind::kReleased);
+  e.code = 0;  // SIGKILLed after the grace period: no exit code of its own
   EXPECT_EQ(classify_exit(e).kind, OutcomeKind::kRetryable);
+}
+
+TEST(StoppedOutcome, OurTimeoutWithoutAFreshCheckpointIsRetryable) {
+  const auto dir = test_support::fresh_scratch_dir("stopped_outcome", "timeout_old");
+  JobExit e = exit_130(dir);
+  e.how = JobExit::How::kTimedOut;
+  EXPECT_EQ(classify_exit(e).kind, OutcomeKind::kRetryable);  // none
+  std::ofstream(checkpoint_file(dir)) << "x";
+  std::filesystem::last_write_time(checkpoint_file(dir),
+                                   std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
+  EXPECT_EQ(classify_exit(e).kind, OutcomeKind::kRetryable);  // from an earlier attempt
 }
 
 }  // namespace
