@@ -235,8 +235,13 @@ StudyReportData build_report_data(Store& store, long long study_id) {
 }
 
 std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir) {
-  const auto files = write_study_report(build_report_data(store, study_id), out_dir);
-  return files.html;
+  const StudyReportData data = build_report_data(store, study_id);
+  if (!adaptive_grids_of(store.study_definition(study_id))) return write_study_report(data, out_dir).html;
+  // Adaptive series: the report fits what the decisions and the store used,
+  // the window of the finest grids (sched/adaptive_window.h).
+  const Extrapolator windowed =
+      windowed_extrapolator(library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}));
+  return write_study_report(data, out_dir, windowed).html;
 }
 
 }  // namespace gridfree

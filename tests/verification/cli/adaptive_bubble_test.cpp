@@ -146,6 +146,12 @@ TEST(AdaptiveBubble, ALadderStartedTooCoarseStopsOnTheWindowOfItsFinestGrids) {
   // are not converged.
   const auto adaptive = series_of(a);
   EXPECT_NE(extrapolate_prefix(dir, adaptive, adaptive.size()).first, "converged");
+  // The report shows the fit the stop was decided on, not the all-grid one.
+  std::ifstream md(dir / "reports/adaptive/report.md");
+  std::stringstream report;
+  report << md.rdbuf();
+  EXPECT_NE(report.str().find("**converged**"), std::string::npos) << report.str().substr(0, 2000);
+  EXPECT_EQ(report.str().find("**pre-asymptotic**"), std::string::npos);
   const double f0_a = std::stod(sql(a, "SELECT f0 FROM v_series")), u_a = std::stod(sql(a, "SELECT finest_u FROM v_series"));
   const double f0_f = std::stod(sql(f, "SELECT f0 FROM v_series")), u_f = std::stod(sql(f, "SELECT finest_u FROM v_series"));
   EXPECT_LE(std::abs(f0_a - f0_f), std::max(u_a, u_f)) << "adaptive " << f0_a << " ± " << u_a << ", fixed " << f0_f
