@@ -37,7 +37,9 @@ std::string adaptive_status_word(AdaptiveDecision::Kind kind) {
   }
 }
 
-AdaptiveDecision decide_adaptive_step(const AdaptiveGrids& a, const std::vector<AdaptiveRung>& ladder,
+namespace {
+
+AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>& ladder,
                                       std::size_t started, const AdaptiveFit& fit, double scale,
                                       double machine_memory) {
   AdaptiveDecision d;
@@ -96,6 +98,16 @@ AdaptiveDecision decide_adaptive_step(const AdaptiveGrids& a, const std::vector<
   d.message = "refining: " + why + " at " + at + "; next grid Δ* " + num("%.3g", next.delta_star) + " (" +
               std::to_string(next.cells[0]) + "x" + std::to_string(next.cells[1]) + "x" +
               std::to_string(next.cells[2]) + ", an estimated " + num("%.3g", scale * next.model_cpu_s) + " CPU s)";
+  return d;
+}
+
+}  // namespace
+
+AdaptiveDecision decide_adaptive_step(const AdaptiveGrids& a, const std::vector<AdaptiveRung>& ladder,
+                                      std::size_t started, const AdaptiveFit& fit, double scale,
+                                      double machine_memory) {
+  AdaptiveDecision d = decide(a, ladder, started, fit, scale, machine_memory);
+  if (!fit.window.empty()) d.message += "; " + fit.window;
   return d;
 }
 

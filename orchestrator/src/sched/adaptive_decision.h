@@ -9,6 +9,9 @@
 //      machine's), or its predicted CPU s·model > max_cpu_s → stop (target_not_reached)
 //   4. otherwise the next rung of the ladder                → continue
 //
+// The fit read here is the window's when the coarse grids were left out
+// (sched/adaptive_window.h); the message then says which grids were used.
+//
 // The next grid is always the next rung (no skipping: every rung keeps the
 // ratio of neighbouring grids the study asked for). The cost of a rung is
 // the cost model's one-thread CPU time (study/study_plan.h) times the series'
@@ -30,6 +33,9 @@ struct AdaptiveFit {
   int ng = 0;                     // converged grids
   std::string verdict;            // converged | pre-asymptotic | unreliable | insufficient_grids | "" (none)
   std::optional<double> finest_delta_star, finest_rde, f0, finest_u;
+  // Non-empty when the fit is a window of the finest grids
+  // (sched/adaptive_window.h): window_sentence(), appended to every message.
+  std::string window;
 };
 
 struct AdaptiveDecision {

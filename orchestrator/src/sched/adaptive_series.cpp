@@ -8,6 +8,7 @@
 
 #include "job/job_hash.h"
 #include "report/extrapolator.h"
+#include "sched/adaptive_window.h"
 #include "sched/series_finish.h"
 #include "study/study_plan.h"
 
@@ -84,14 +85,18 @@ bool decide_series(Store& store, const SeriesInfo& s, const AdaptiveGrids& setti
     }
   }
   nlohmann::json ex;
+  std::string window;
   if (h.size() >= 2) {
     try {
-      ex = extrapolate(h, f);
+      WindowedFit w = windowed_extrapolation(h, f, extrapolate);  // the finest grids when the coarse spoil the fit
+      ex = std::move(w.extrapolation);
+      window = window_sentence(w);
     } catch (const std::exception& e) {
       ex = {{"status", std::string("error: ") + e.what()}};
     }
   }
-  const AdaptiveFit fit = adaptive_fit_of(ex, static_cast<int>(h.size()));
+  AdaptiveFit fit = adaptive_fit_of(ex, static_cast<int>(h.size()));
+  fit.window = window;
   const double scale = measured > 0 && model > 0 ? measured / model : 1.0;
   nlohmann::json spec = job_spec(store, points.front().job_id);
   std::array<double, 3> domain{};

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
@@ -10,8 +11,10 @@
 #include "extrap/verdict.h"
 #include "report/report.h"
 #include "sched/adaptive_series.h"
+#include "sched/adaptive_window.h"
 #include "store/store_alignment.h"
 #include "store/store_ensembles.h"
+#include "study/adaptive_grids.h"
 
 namespace gridfree {
 namespace {
@@ -168,7 +171,10 @@ int finish_ready_series(Store& store, long long study_id) {
   advance_adaptive_series(store, study_id);  // adaptive series: refine or stop first
   const auto ready = store.series_ready(study_id);
   if (!ready.empty()) {
-    const auto extrapolate = library_extrapolator(study_extrapolation_settings(store, study_id));
+    Extrapolator extrapolate = library_extrapolator(study_extrapolation_settings(store, study_id));
+    // An adaptive series stores the fit its last decision used: the window
+    // of its finest grids when the coarse ones were left out.
+    if (adaptive_grids_of(store.study_definition(study_id))) extrapolate = windowed_extrapolator(std::move(extrapolate));
     for (const auto& s : ready) {
       finish_series(store, s, extrapolate);
       ++finished;
@@ -229,8 +235,13 @@ StudyReportData build_report_data(Store& store, long long study_id) {
 }
 
 std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir) {
-  const auto files = write_study_report(build_report_data(store, study_id), out_dir);
-  return files.html;
+  const StudyReportData data = build_report_data(store, study_id);
+  if (!adaptive_grids_of(store.study_definition(study_id))) return write_study_report(data, out_dir).html;
+  // Adaptive series: the report fits what the decisions and the store used,
+  // the window of the finest grids (sched/adaptive_window.h).
+  const Extrapolator windowed =
+      windowed_extrapolator(library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}));
+  return write_study_report(data, out_dir, windowed).html;
 }
 
 }  // namespace gridfree

@@ -11,6 +11,11 @@
 //    jobs, so the same numbers — gives a verdict other than converged or an
 //    RDE above the target, and on the adaptive series' own grids it meets it;
 //  - its f0 equals the fixed series' f0 within the larger of their U.
+//
+// And a ladder started too coarse, Δ* = 3.3/1.25^k: the fit of all its grids
+// stays pre-asymptotic (the coarsest rung lies outside the asymptotic range),
+// the fit window of the finest grids (sched/adaptive_window.h) stops it, and
+// its f0 equals the fixed Δ* 2 series' f0 within the larger U.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -116,6 +121,37 @@ TEST(AdaptiveBubble, StopsAtTheFirstGridMeetingTheTargetWithTheFixedSeriesF0) {
   EXPECT_EQ(verdict, "converged");
   EXPECT_LE(rde, kTarget);
 
+  const double f0_a = std::stod(sql(a, "SELECT f0 FROM v_series")), u_a = std::stod(sql(a, "SELECT finest_u FROM v_series"));
+  const double f0_f = std::stod(sql(f, "SELECT f0 FROM v_series")), u_f = std::stod(sql(f, "SELECT finest_u FROM v_series"));
+  EXPECT_LE(std::abs(f0_a - f0_f), std::max(u_a, u_f)) << "adaptive " << f0_a << " ± " << u_a << ", fixed " << f0_f
+                                                       << " ± " << u_f;
+}
+
+TEST(AdaptiveBubble, ALadderStartedTooCoarseStopsOnTheWindowOfItsFinestGrids) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_bubble_test", "coarse_start");
+  std::vector<double> ladder;
+  for (int k = 0; k <= 5; ++k) ladder.push_back(2.0 / std::pow(1.25, k));  // 2 → 0.655
+  write_study(dir, "fixed", {{"delta_star", ladder}});
+  write_study(dir, "adaptive", {{"target_rde", kTarget}, {"coarsest_delta_star", 3.3}, {"ratio", 1.25},
+                                {"finest_delta_star", 0.5}});
+  auto r = gridfree_in(dir, "run fixed.json -j 2 --db f.sqlite");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = gridfree_in(dir, "run adaptive.json -j 2 --db a.sqlite");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = dir / "a.sqlite", f = dir / "f.sqlite";
+  const std::string note = sql(a, "SELECT adaptive_note FROM series");
+  ASSERT_EQ(sql(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged") << note;
+  EXPECT_NE(note.find("coarser one"), std::string::npos) << note;
+  // Without the window it would not have stopped: all its grids together
+  // are not converged.
+  const auto adaptive = series_of(a);
+  EXPECT_NE(extrapolate_prefix(dir, adaptive, adaptive.size()).first, "converged");
+  // The report shows the fit the stop was decided on, not the all-grid one.
+  std::ifstream md(dir / "reports/adaptive/report.md");
+  std::stringstream report;
+  report << md.rdbuf();
+  EXPECT_NE(report.str().find("**converged**"), std::string::npos) << report.str().substr(0, 2000);
+  EXPECT_EQ(report.str().find("**pre-asymptotic**"), std::string::npos);
   const double f0_a = std::stod(sql(a, "SELECT f0 FROM v_series")), u_a = std::stod(sql(a, "SELECT finest_u FROM v_series"));
   const double f0_f = std::stod(sql(f, "SELECT f0 FROM v_series")), u_f = std::stod(sql(f, "SELECT finest_u FROM v_series"));
   EXPECT_LE(std::abs(f0_a - f0_f), std::max(u_a, u_f)) << "adaptive " << f0_a << " ± " << u_a << ", fixed " << f0_f
