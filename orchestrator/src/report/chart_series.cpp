@@ -50,7 +50,9 @@ std::string fit_subtitle(const SeriesSummary& s) {
   if (!s.extrapolation || !s.f0()) return s.note().empty() ? "no extrapolation" : s.note();
   const ExtrapolationView& e = *s.extrapolation;
   std::string out = "method " + (e.method.empty() ? std::string("?") : e.method) + ", " + f0_label(s);
-  if (e.p) out += ", p = " + format_g(*e.p, 3);
+  // With a mixed fit chosen, p is the rejected power law's (why it was rejected).
+  if (e.p) out += (e.method == "power" ? ", p = " : ", power law's p = ") + format_g(*e.p, 3) +
+                  (e.method == "power" ? "" : " (rejected)");
   if (auto q = e.fit_quality()) out += ", σ_{RE}/R_{f} = " + format_g(*q, 2) + (*q < 1 ? " (good fit)" : " (poor fit)");
   if (s.insufficient()) out += "; insufficient grids: no uncertainty";
   return out;

@@ -122,6 +122,21 @@ TEST(ChartRules, F0RoundedToTheDigitsUSupports) {
   EXPECT_NE(chart.subtitle.find("σ_{RE}/R_{f}"), std::string::npos);
 }
 
+// With a mixed fit chosen the subtitle's p is the rejected power law's and
+// says so; with the power law chosen it is the fit's own order.
+TEST(ChartRules, SubtitleSaysWhosePIsShown) {
+  auto s = summaries()[0];
+  ASSERT_TRUE(s.extrapolation.has_value());
+  s.extrapolation->p = 2.13;
+  s.extrapolation->method = "power";
+  const std::string power = series_chart(s, 0).subtitle;
+  EXPECT_NE(power.find(", p = 2.13"), std::string::npos) << power;
+  EXPECT_EQ(power.find("rejected"), std::string::npos) << power;
+  s.extrapolation->method = "mixed";
+  const std::string mixed = series_chart(s, 0).subtitle;
+  EXPECT_NE(mixed.find("power law's p = 2.13 (rejected)"), std::string::npos) << mixed;
+}
+
 // Series A has two triplets, both monotone with GCI_fine = 0.001, at
 // h1 = 0.5 and 1 (f = 1004, 1008): bands ±1.004 and ±1.008 at 1.02·h1.
 TEST(ChartRules, GciBandsByConvergenceType) {
