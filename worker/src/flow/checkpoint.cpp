@@ -82,7 +82,7 @@ std::variant<Checkpoint, std::string> read_checkpoint(const std::filesystem::pat
       const auto n = a.at("size").get<std::size_t>();
       if (n > (body - at) / sizeof(double)) return std::string("array sizes exceed the file");
       CheckpointArray arr{a.at("name").get<std::string>(), std::vector<double>(n)};
-      std::memcpy(arr.values.data(), bytes.data() + at, n * sizeof(double));
+      if (n > 0) std::memcpy(arr.values.data(), bytes.data() + at, n * sizeof(double));  // empty: data() may be null
       at += n * sizeof(double);
       arrays.push_back(std::move(arr));
     }
