@@ -41,6 +41,14 @@ inline CommandRun run_command(const std::string& command, const std::filesystem:
   return r;
 }
 
+// `query` run by the sqlite3 shell on `db`; its output without trailing
+// newlines (stderr kept beside the database in sql.txt).
+inline std::string sqlite_query(const std::filesystem::path& db, const std::string& query) {
+  auto r = run_command("sqlite3 '" + db.string() + "' \"" + query + "\"", db.parent_path() / "sql.txt");
+  while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
+  return r.out;
+}
+
 // The project's executable `name` (in GRIDFREE_BIN_DIR, which every test is
 // compiled with) run with `args`; stderr kept in dir/stderr.txt.
 inline CommandRun run_executable(const std::string& name, const std::string& args,

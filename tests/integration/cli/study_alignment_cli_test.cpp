@@ -30,11 +30,7 @@ CommandRun gridfree_in(const fs::path& dir, const std::string& args) {
                                              dir / "stderr.txt");
 }
 
-std::string sql(const fs::path& db, const std::string& query) {
-  auto r = gridfree::test_support::run_command("sqlite3 '" + db.string() + "' \"" + query + "\"", db.parent_path() / "sql.txt");
-  while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
-  return r.out;
-}
+std::string sql(const fs::path& db, const std::string& query) { return gridfree::test_support::sqlite_query(db, query); }
 
 fs::path write_study(const fs::path& dir, const std::string& name, bool alignment) {
   std::ifstream in(kSource / "studies/quickstart.json");

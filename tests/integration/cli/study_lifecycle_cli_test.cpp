@@ -27,11 +27,7 @@ CommandRun gridfree_in(const fs::path& dir, const std::string& args) {
                                              dir / "stderr.txt");
 }
 
-std::string sql(const fs::path& db, const std::string& query) {
-  auto r = gridfree::test_support::run_command("sqlite3 '" + db.string() + "' \"" + query + "\"", db.parent_path() / "sql.txt");
-  while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
-  return r.out;
-}
+std::string sql(const fs::path& db, const std::string& query) { return gridfree::test_support::sqlite_query(db, query); }
 
 // One case (`mode` picks the fake worker's behaviour) on the given grids.
 fs::path write_study(const fs::path& dir, const std::string& file, const std::string& name, const std::string& mode,
