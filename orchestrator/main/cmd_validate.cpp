@@ -11,6 +11,7 @@
 #include "extrap/grid_design.h"
 #include "study/study_plan.h"
 #include "sched/adaptive_prior.h"
+#include "sched/cost_history.h"
 
 namespace gridfree::cli {
 namespace {
@@ -72,11 +73,13 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                   "predict the grids a target RDE (fraction, 0.01 = 1 %) needs and their cost (default for "
                   "adaptive grids: their target_rde)")
       ->check(CLI::Range(1e-12, 0.999999));
-  sub->add_option("--db", *db, "database whose finished similar series inform --target-rde (only read)");
+  sub->add_option("--db", *db,
+                  "database whose finished similar jobs calibrate the time estimates and whose finished similar "
+                  "series inform --target-rde (only read)");
   sub->callback([file, json, jobs, target, db, &exit_code] {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
-    const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
+    const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs(), read_cost_history(*db));
     print_grid_warnings(study, ex);
     const auto grids = grid_listing(study);
     const auto warnings = neighbour_warnings(grids);

@@ -74,7 +74,7 @@ TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model)
       g.delta_star = ds[k].first;
       g.cells = ds[k].second;
       g.predicted_rde = model.predict(g.delta_star);
-      g.cpu_s = model.cost_scale * estimated_seconds(g.cells, 1);
+      g.cpu_s = model.cost_scale * estimated_seconds(g.cells, 1, apriori_cost_ratio({{"case", c.doc}}, g.cells).ratio);
       g.memory_bytes = estimated_memory_bytes(g.cells);
       if (first_met == ds.size() && g.predicted_rde <= target) first_met = k;
       cp.grids.push_back(g);
@@ -99,10 +99,10 @@ std::string rde_model_text(const RdeModel& m) {
   if (m.a_priori)
     return out + " — a-priori: no finished similar series in the database; p = 1 and the coefficient "
                  "assumed from the bursting-bubble baseline (RDE 0.78 % at Δ* 0.564, docs/BENCHMARKS.md); "
-                 "costs from the cost model alone";
+                 "costs from the a-priori cost model (study/cost_model.h)";
   return out + " — fitted to " + std::to_string(m.points) + " (Δ*, RDE) of " + std::to_string(m.similar_series) +
-         " finished similar series; costs from the cost model × " + fmt("%.3g", m.cost_scale) +
-         " (their measured CPU time / the model's)";
+         " finished similar series; costs from the a-priori cost model × " + fmt("%.3g", m.cost_scale) +
+         " (their measured CPU time / the a-priori model's)";
 }
 
 nlohmann::json target_plan_json(const TargetPlan& p) {

@@ -14,8 +14,9 @@
 // whose predicted RDE ≤ target, at least kMinGridsForConverged (a `converged`
 // verdict needs n − 3 ≥ 2 degrees of freedom, docs/EXTRAPOLATION.md
 // "Verdicts"; an adaptive series stops at its fifth grid at the earliest). Cost:
-// the cost model's one-thread CPU time (study/study_plan.h) times the
-// measured scale s of the similar series (Σ cpu_s / Σ model; 1 without them),
+// the a-priori cost model's one-thread CPU time (study/study_plan.h with the
+// case's a-priori ratio, study/cost_model.h) times the measured scale s of
+// the similar series (Σ cpu_s / Σ a-priori model; 1 without them),
 // peak memory the largest needed grid's estimate.
 #pragma once
 
