@@ -22,15 +22,6 @@ double number_at(const nlohmann::json& doc, const char* pointer) {
   return doc.contains(p) && doc.at(p).is_number() ? doc.at(p).get<double>() : 0.0;
 }
 
-// "x" or "z" is "wall" (the case schema requires both).
-bool side_walls(const nlohmann::json& case_doc) {
-  const auto b = case_doc.find("boundaries");
-  if (b == case_doc.end() || !b->is_object()) return false;
-  for (const char* axis : {"x", "z"})
-    if (const auto it = b->find(axis); it != b->end() && it->is_string() && it->get<std::string>() == "wall") return true;
-  return false;
-}
-
 nlohmann::json case_of(const nlohmann::json& job_doc) {
   const auto c = job_doc.is_object() ? job_doc.find("case") : job_doc.end();
   return c != job_doc.end() && c->is_object() ? *c : nlohmann::json::object();
@@ -56,16 +47,14 @@ double particle_reynolds(const nlohmann::json& c) {
 CostRatio apriori_cost_ratio(const nlohmann::json& job_doc, const std::array<int, 3>& cells) {
   const auto c = case_of(job_doc);
   const double re = particle_reynolds(c);
+  const bool nested = static_cast<double>(cells[0]) * cells[1] * cells[2] >= kNestedMinCells;
+  const double ref = nested ? kReferenceNestedRatio : kReferenceSingleGridRatio;
+  const double w = re > 1 ? std::min(1.0, std::log(re) / std::log(kReferenceReP)) : 0.0;
   CostRatio r;
-  if (side_walls(c) && re > kInertialReP) {
-    const bool nested = static_cast<double>(cells[0]) * cells[1] * cells[2] >= kNestedMinCells;
-    r.ratio = nested ? kWalledInertialNestedRatio : kWalledInertialSingleGridRatio;
-    r.basis = "a-priori: side walls and Re_p " + fmt("%.3g", re) + " > " + fmt("%g", kInertialReP) + ": × " +
-              fmt("%g", r.ratio) + (nested ? " on a nested-start grid" : " on a single grid") + " (the SSCP-like bed)";
-  } else {
-    r.basis = "a-priori: Re_p " + fmt("%.3g", re) + (side_walls(c) ? ", side walls" : ", periodic sides") +
-              ": × 1 (the bursting-bubble baseline)";
-  }
+  r.ratio = 1 + (ref - 1) * w;
+  r.basis = "a-priori: Re_p " + fmt("%.3g", re) + (nested ? ", nested-start grid" : ", single grid") + ": × " +
+            fmt("%.3g", r.ratio) + " (1 at Re_p ≤ 1, the bubble; " + fmt("%g", ref) + " at Re_p ≥ " +
+            fmt("%g", kReferenceReP) + ", the SSCP-like bed)";
   return r;
 }
 

@@ -14,10 +14,17 @@
 //     median of r_j over the similar jobs nearest in cell count: those
 //     within a factor kHistoryCellWindow of N, else those at the nearest
 //     measured N (the ratio is taken as constant beyond the measured range).
-// (b) a-priori, without history: r from the physics of the case — side
-//     walls and an inertial particle Reynolds number (the SSCP-like bed)
-//     need more outer iterations than the bubble, and the nested start
-//     (N ≥ kNestedMinCells) saves fewer of them; see apriori_cost_ratio.
+// (b) a-priori, without history: r from the particle Reynolds number
+//     Re_p = ρ_g U0 d / μ_g. An inertial bed needs more outer iterations
+//     than the bubble (Re_p = 1) and the nested start (N ≥ kNestedMinCells)
+//     saves fewer of them; side walls were measured not to matter:
+//
+//       r = 1 + (r_ref(N) − 1) · clamp(ln Re_p / ln kReferenceReP, 0, 1)
+//
+//     r_ref = the median measured ratio of the SSCP-like bed (Re_p 475) on
+//     single grids and on nested-start grids; log-linear in between (the
+//     ratios measured at Re_p 1, 20, 100 and 475 lie within 1.3× of it),
+//     constant above (not measured).
 //
 // Pure functions; the database is read by sched/cost_history.h.
 #pragma once
@@ -32,12 +39,12 @@
 
 namespace gridfree {
 
-// A-priori ratios (docs/ORCHESTRATOR.md "Cost model", measured 2026-11-29).
-inline constexpr double kInertialReP = 10.0;           // Re_p above this: inertial regime
-// Side walls and Re_p > kInertialReP: median measured ratio of the SSCP-like
-// six-instance study's converged jobs, below and above kNestedMinCells.
-inline constexpr double kWalledInertialSingleGridRatio = 1.4;
-inline constexpr double kWalledInertialNestedRatio = 2.5;
+// A-priori ratios (docs/ORCHESTRATOR.md "Cost model", measured 2026-11-29):
+// the medians over the 83 converged jobs of the SSCP-like six-instance study
+// (35 below kNestedMinCells, 48 above).
+inline constexpr double kReferenceReP = 475.0;
+inline constexpr double kReferenceSingleGridRatio = 1.45;
+inline constexpr double kReferenceNestedRatio = 2.6;
 inline constexpr double kHistoryCellWindow = 2.0;      // similar jobs within N/2 … 2N
 
 enum class CostSource { kAPriori, kHistory };

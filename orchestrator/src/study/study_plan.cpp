@@ -148,25 +148,26 @@ std::string plan_to_table(const Plan& plan) {
   std::snprintf(line, sizeof line, "%-40s %5s %12s %12s %12s  %s\n", "series", "grids", "cells", "max memory",
                 "est. time", "cost ratio");
   out += line;
-  std::vector<std::string> bases;
+  std::vector<std::pair<std::string, std::string>> bases;  // first series with each distinct basis
   for (const auto& r : plan.rows) {
     std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s  %s\n", r.series.c_str(), r.grids,
                   static_cast<unsigned long long>(r.cells), human_bytes(r.memory_bytes).c_str(),
                   human_seconds(r.seconds).c_str(), cost_column(r).c_str());
     out += line;
-    if (std::find(bases.begin(), bases.end(), r.cost_basis) == bases.end()) bases.push_back(r.cost_basis);
+    if (std::none_of(bases.begin(), bases.end(), [&](const auto& x) { return x.second == r.cost_basis; }))
+      bases.emplace_back(r.series, r.cost_basis);
   }
   std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s\n", "total (jobs)", plan.jobs,
                 static_cast<unsigned long long>(plan.cells),
                 human_bytes(plan.max_memory_bytes).c_str(), human_seconds(plan.seconds).c_str());
   out += line;
   std::snprintf(line, sizeof line,
-                "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell; cost ratio x %s x "
-                "%.1e s per cell-iteration)\n",
+                "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell; time = cost ratio x "
+                "iterations x cells x %.1e s, iterations %s)\n",
                 plan.workers, plan.threads_per_worker, human_seconds(plan.wall_seconds).c_str(), kWorkerBytesPerCell,
-                iterations_model_text().c_str(), kSecondsPerCellIteration);
+                kSecondsPerCellIteration, iterations_model_text().c_str());
   out += line;
-  for (const auto& b : bases) out += "cost ratio of the largest grids: " + b + "\n";
+  for (const auto& [series, b] : bases) out += "cost ratio, largest grid of " + series + ": " + b + "\n";
   return out;
 }
 

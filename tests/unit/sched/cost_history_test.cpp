@@ -76,16 +76,16 @@ TEST(CostHistory, PlanUsesFinishedSimilarJobsAndFallsBackToAPriori) {
   EXPECT_EQ(json["series"][0]["cost_source"], "history");
   EXPECT_NE(plan_to_table(plan).find("history x 1.5"), std::string::npos) << plan_to_table(plan);
 
-  // A drag law the database has not seen: a-priori (walls, Re_p 475; the
-  // grids of 6 000 to 34 506 cells straddle the nested-start threshold).
+  // A drag law the database has not seen: a-priori (Re_p 475; the grids of
+  // 6 000 to 34 506 cells straddle the nested-start threshold).
   auto doc = study.definition;
   doc["factors"]["drag"] = {"hkl"};
   const Study hkl = parse_study_document(doc, kSource + "/studies");
   const Plan a = make_plan(hkl, expand(hkl), 1, 1, history);
   for (const auto& row : a.rows) {
     EXPECT_EQ(row.cost_source, CostSource::kAPriori) << row.series;
-    EXPECT_EQ(row.cost_ratio_min, kWalledInertialSingleGridRatio) << row.series;
-    EXPECT_EQ(row.cost_ratio_max, kWalledInertialNestedRatio) << row.series;
+    EXPECT_DOUBLE_EQ(row.cost_ratio_min, kReferenceSingleGridRatio) << row.series;
+    EXPECT_DOUBLE_EQ(row.cost_ratio_max, kReferenceNestedRatio) << row.series;
   }
   // The bursting bubble from the same database: a-priori, ratio 1 (the base model).
   const Study bubble = parse_study(kSource + "/studies/quickstart.json");

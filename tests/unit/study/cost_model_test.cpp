@@ -5,6 +5,8 @@
 // to rounding: tolerance 1e-12 relative).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "study/cost_model.h"
 #include "study/study_plan.h"
 
@@ -43,21 +45,25 @@ TEST(CostModel, ParticleReynoldsNumberOfBothCases) {
   EXPECT_EQ(particle_reynolds(nlohmann::json::object()), 0.0);  // no inflow, no gas: 0, not NaN
 }
 
-TEST(CostModel, APrioriRatioFollowsWallsReynoldsNumberAndNestedStart) {
+TEST(CostModel, APrioriRatioFollowsReynoldsNumberAndNestedStart) {
   const std::array<int, 3> single{15, 80, 5}, nested{47, 250, 16};  // 6 000 and 188 000 cells
-  EXPECT_EQ(apriori_cost_ratio(bubble_job(), single).ratio, 1.0);
-  EXPECT_EQ(apriori_cost_ratio(bubble_job(), nested).ratio, 1.0);
-  const CostRatio sscp = apriori_cost_ratio(sscp_like_job(), single);
-  EXPECT_EQ(sscp.ratio, kWalledInertialSingleGridRatio);
+  EXPECT_DOUBLE_EQ(apriori_cost_ratio(bubble_job(), single).ratio, 1.0);  // Re_p = 1
+  EXPECT_DOUBLE_EQ(apriori_cost_ratio(bubble_job(), nested).ratio, 1.0);
+  const CostRatio sscp = apriori_cost_ratio(sscp_like_job(), single);  // Re_p 475.4 ≥ the reference
+  EXPECT_DOUBLE_EQ(sscp.ratio, kReferenceSingleGridRatio);
   EXPECT_EQ(sscp.source, CostSource::kAPriori);
-  EXPECT_NE(sscp.basis.find("side walls"), std::string::npos) << sscp.basis;
-  EXPECT_EQ(apriori_cost_ratio(sscp_like_job(), nested).ratio, kWalledInertialNestedRatio);
-  auto periodic = sscp_like_job();  // both conditions are needed
+  EXPECT_NE(sscp.basis.find("Re_p 475"), std::string::npos) << sscp.basis;
+  EXPECT_DOUBLE_EQ(apriori_cost_ratio(sscp_like_job(), nested).ratio, kReferenceNestedRatio);
+  auto periodic = sscp_like_job();  // side walls do not enter
   periodic["case"]["boundaries"]["x"] = periodic["case"]["boundaries"]["z"] = "periodic";
-  EXPECT_EQ(apriori_cost_ratio(periodic, nested).ratio, 1.0);
-  auto slow = sscp_like_job();
-  slow["case"]["boundaries"]["y_low"]["superficial_velocity_cm_s"] = 2.0;  // Re_p 4.3
-  EXPECT_EQ(apriori_cost_ratio(slow, nested).ratio, 1.0);
+  EXPECT_DOUBLE_EQ(apriori_cost_ratio(periodic, nested).ratio, kReferenceNestedRatio);
+  auto re20 = sscp_like_job();  // log-linear in Re_p between 1 and the reference
+  re20["case"]["boundaries"]["y_low"]["superficial_velocity_cm_s"] = 219.0 * 20 / 475.376;
+  const double w = std::log(20.0) / std::log(kReferenceReP);
+  EXPECT_NEAR(apriori_cost_ratio(re20, nested).ratio, 1 + (kReferenceNestedRatio - 1) * w, 1e-9);
+  auto creeping = sscp_like_job();
+  creeping["case"]["boundaries"]["y_low"]["superficial_velocity_cm_s"] = 0.2;  // Re_p 0.43
+  EXPECT_DOUBLE_EQ(apriori_cost_ratio(creeping, nested).ratio, 1.0);
 }
 
 TEST(CostModel, SimilarJobsShareSetupAndDragNotNameOrParticles) {
@@ -108,7 +114,7 @@ TEST(CostModel, JobRatioUsesHistoryOfSimilarJobsElseAPriori) {
   gb["numerics"]["drag"] = "gidaspow_blend";
   const CostRatio a = job_cost_ratio(history, gb, {15, 80, 5});
   EXPECT_EQ(a.source, CostSource::kAPriori);
-  EXPECT_EQ(a.ratio, kWalledInertialSingleGridRatio);
+  EXPECT_DOUBLE_EQ(a.ratio, kReferenceSingleGridRatio);
 }
 
 TEST(CostModel, EstimatedSecondsScaleWithTheRatio) {
