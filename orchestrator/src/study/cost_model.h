@@ -23,8 +23,9 @@
 //
 //     r_ref = the median measured ratio of the SSCP-like bed (Re_p 475) on
 //     single grids and on nested-start grids; log-linear in between (the
-//     ratios measured at Re_p 1, 20, 100 and 475 lie within 1.3× of it),
-//     constant above (not measured).
+//     SSCP-like bed's ratios measured at Re_p 20, 100 and 475 lie within
+//     1.3× of it; at Re_p 1 that bed is cheaper than the bubble, 0.35–1.2,
+//     which r = 1 over-estimates), constant above (not measured).
 //
 // Pure functions; the database is read by sched/cost_history.h.
 #pragma once
