@@ -7,11 +7,13 @@
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
+#include "core/input_error.h"
 #include "study/grid_listing.h"
 #include "extrap/grid_design.h"
 #include "study/study_plan.h"
 #include "sched/adaptive_prior.h"
 #include "sched/cost_history.h"
+#include "store/sqlite.h"
 
 namespace gridfree::cli {
 namespace {
@@ -79,7 +81,13 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   sub->callback([file, json, jobs, target, db, &exit_code] {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
-    const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs(), read_cost_history(*db));
+    CostHistory history;
+    try {
+      history = read_cost_history(*db);
+    } catch (const SqliteError& e) {
+      throw InputError("--db", *db + " is not a readable gridfree database (" + e.what() + ")");
+    }
+    const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs(), history);
     print_grid_warnings(study, ex);
     const auto grids = grid_listing(study);
     const auto warnings = neighbour_warnings(grids);

@@ -218,6 +218,11 @@ TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
   auto plan = nlohmann::json::parse(r.out)["target"];
   EXPECT_TRUE(plan["model"]["a_priori"].get<bool>());
   EXPECT_EQ(nlohmann::json::parse(r.out)["series"][0]["cost_source"], "a-priori");  // docs/ORCHESTRATOR.md "Cost model"
+  std::ofstream(dir / "garbage.sqlite") << "not a database";  // refused, named, left as it was
+  const auto bad = gridfree_in(dir, "plan fixed.json --db garbage.sqlite");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--db"), std::string::npos) << bad.err;
+  EXPECT_EQ(fs::file_size(dir / "garbage.sqlite"), std::string("not a database").size());
   EXPECT_DOUBLE_EQ(plan["model"]["p"].get<double>(), 1.0);
   EXPECT_FALSE(fs::exists(dir / "none.sqlite"));
   r = gridfree_in(dir, "plan fixed.json --target-rde 0.001");
