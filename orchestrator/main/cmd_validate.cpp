@@ -93,7 +93,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
     const auto warnings = neighbour_warnings(grids);
     const double rde = *target > 0 ? *target : study.adaptive_grids ? study.adaptive_grids->target_rde : 0;
     std::optional<TargetPlan> tp;
-    if (rde > 0) tp = plan_for_target(study, rde, prior_rde_model(*db, study));
+    if (rde > 0) tp = plan_for_target(study, rde, prior_rde_model(*db, study), history);
     if (*json) {
       auto j = plan_to_json(plan);
       j["grids"] = grid_listing_json(grids);
