@@ -7,10 +7,13 @@
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
+#include "core/input_error.h"
 #include "study/grid_listing.h"
 #include "extrap/grid_design.h"
 #include "study/study_plan.h"
 #include "sched/adaptive_prior.h"
+#include "sched/cost_history.h"
+#include "store/sqlite.h"
 
 namespace gridfree::cli {
 namespace {
@@ -72,17 +75,25 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                   "predict the grids a target RDE (fraction, 0.01 = 1 %) needs and their cost (default for "
                   "adaptive grids: their target_rde)")
       ->check(CLI::Range(1e-12, 0.999999));
-  sub->add_option("--db", *db, "database whose finished similar series inform --target-rde (only read)");
+  sub->add_option("--db", *db,
+                  "database whose finished similar jobs calibrate the time estimates and whose finished similar "
+                  "series inform --target-rde (only read)");
   sub->callback([file, json, jobs, target, db, &exit_code] {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
-    const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs());
+    CostHistory history;
+    try {
+      history = read_cost_history(*db);
+    } catch (const SqliteError& e) {
+      throw InputError("--db", *db + " is not a readable gridfree database (" + e.what() + ")");
+    }
+    const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs(), history);
     print_grid_warnings(study, ex);
     const auto grids = grid_listing(study);
     const auto warnings = neighbour_warnings(grids);
     const double rde = *target > 0 ? *target : study.adaptive_grids ? study.adaptive_grids->target_rde : 0;
     std::optional<TargetPlan> tp;
-    if (rde > 0) tp = plan_for_target(study, rde, prior_rde_model(*db, study));
+    if (rde > 0) tp = plan_for_target(study, rde, prior_rde_model(*db, study), history);
     if (*json) {
       auto j = plan_to_json(plan);
       j["grids"] = grid_listing_json(grids);

@@ -49,8 +49,9 @@ RdeModel prior_rde_model(const std::filesystem::path& db_file, const Study& stud
     t.bind_all(series.as_int(0));
     while (t.step()) {
       measured += t.as_double(0);
-      model += estimated_seconds({static_cast<int>(t.as_int(1)), static_cast<int>(t.as_int(2)),
-                                  static_cast<int>(t.as_int(3))}, 1);
+      const std::array<int, 3> cells = {static_cast<int>(t.as_int(1)), static_cast<int>(t.as_int(2)),
+                                        static_cast<int>(t.as_int(3))};
+      model += estimated_seconds(cells, 1, apriori_cost_ratio(spec, cells).ratio);
     }
   }
   RdeModel m = fit_rde_model(points);

@@ -7,7 +7,8 @@
 // fwhm_dp, drag, deposition) as one of the study's series, with at least
 // one stored uncertainty (its series was extrapolated). Their (Δ*, RDE) of
 // every grid are pooled into one fit; their measured CPU seconds over the
-// cost model's give the cost scale. The database is only read.
+// a-priori cost model's (study/cost_model.h) give the cost scale. The
+// database is only read.
 #pragma once
 
 #include <filesystem>

@@ -7,8 +7,8 @@
 
 namespace gridfree {
 
-double default_job_timeout_s(const std::array<int, 3>& cells, int threads) {
-  return std::max(kMinJobTimeoutS, kJobTimeoutMargin * estimated_seconds(cells, threads));
+double default_job_timeout_s(const std::array<int, 3>& cells, int threads, double cost_ratio) {
+  return std::max(kMinJobTimeoutS, kJobTimeoutMargin * estimated_seconds(cells, threads, cost_ratio));
 }
 
 }  // namespace gridfree

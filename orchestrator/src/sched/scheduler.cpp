@@ -14,6 +14,7 @@
 #include "job/memory_estimate.h"
 #include "sched/budget_claim.h"
 #include "sched/job_timeout.h"
+#include "study/cost_model.h"
 #include "sched/outcome.h"
 #include "sched/series_finish.h"
 #include "sched/study_status.h"
@@ -97,7 +98,7 @@ double job_timeout_s(const SchedulerOptions& o, Store& store, const ClaimedJob& 
   const nlohmann::json d = store.study_definition(job.study_id);
   if (d.is_object())
     if (const auto t = d.find("timeout_s"); t != d.end() && t->is_number()) return t->get<double>();
-  return default_job_timeout_s(job.cells, o.threads_per_job);
+  return default_job_timeout_s(job.cells, o.threads_per_job, apriori_cost_ratio(job.spec, job.cells).ratio);
 }
 
 }  // namespace

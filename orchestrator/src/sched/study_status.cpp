@@ -22,6 +22,15 @@ std::string cell(const nlohmann::json& v, const char* fmt) {
   return buf;
 }
 
+// The job document of a stored job (an empty object when unreadable).
+nlohmann::json spec_of(Store& store, long long job_id) {
+  auto st = store.db().prepare("SELECT spec_json FROM jobs WHERE id = ?");
+  st.bind_all(job_id);
+  if (!st.step()) return nlohmann::json::object();
+  auto j = nlohmann::json::parse(st.as_text(0), nullptr, false);
+  return j.is_object() ? j : nlohmann::json::object();
+}
+
 nlohmann::json series_row(Store& store, const SeriesInfo& s) {
   int done = 0, total = 0;
   for (const auto& p : store.series_points(s.id)) {
@@ -59,9 +68,11 @@ nlohmann::json study_detail(Store& store, long long study_id, const std::filesys
   int running_count = 0;
   for (const auto& s : store.series_of_study(study_id)) {
     series.push_back(series_row(store, s));
-    for (const auto& p : store.series_points(s.id)) {
+    const auto points = store.series_points(s.id);
+    const auto spec = points.empty() ? nlohmann::json::object() : spec_of(store, points.front().job_id);
+    for (const auto& p : points) {
       EtaJob e;
-      e.model_s = estimated_seconds(p.cells, 1);
+      e.model_s = estimated_seconds(p.cells, 1, apriori_cost_ratio(spec, p.cells).ratio);
       if (p.job_status == "done" || p.job_status == "failed") {
         e.state = EtaJob::State::kDone;
         e.wall_s = p.wall_s;

@@ -18,18 +18,35 @@ static double cell_count(const std::array<int, 3>& c) {
 
 double estimated_memory_bytes(const std::array<int, 3>& cells) { return job_memory_estimate_bytes(cells); }
 
-double estimated_iterations(const std::array<int, 3>& cells) {
-  const double n = cell_count(cells);
+static double iterations_of(double n) {
   if (n >= kNestedMinCells) return kNestedIterations;
   return kBaseIterations + kIterationsPerCellRoot * std::cbrt(n);
 }
 
-double estimated_seconds(const std::array<int, 3>& cells, int threads) {
-  const double n = cell_count(cells);
-  return estimated_iterations(cells) * n * kSecondsPerCellIteration / std::max(1, threads);
+double estimated_iterations(const std::array<int, 3>& cells) { return iterations_of(cell_count(cells)); }
+
+double base_cpu_seconds(double n) { return iterations_of(n) * n * kSecondsPerCellIteration; }
+
+double estimated_seconds(const std::array<int, 3>& cells, int threads, double cost_ratio) {
+  return cost_ratio * base_cpu_seconds(cell_count(cells)) / std::max(1, threads);
 }
 
-Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores) {
+// One job's estimate added to its series' row.
+static void add_job(PlanRow& row, const std::array<int, 3>& cells, const CostRatio& r, int threads) {
+  const auto n = static_cast<std::uint64_t>(cell_count(cells));
+  row.cells += n;
+  if (n >= row.largest_cells) row.cost_basis = r.basis;
+  row.largest_cells = std::max(row.largest_cells, n);
+  row.memory_bytes = std::max(row.memory_bytes, estimated_memory_bytes(cells));
+  row.seconds += estimated_seconds(cells, threads, r.ratio);
+  const bool first = row.cost_ratio_max == 0;
+  row.cost_ratio_min = first ? r.ratio : std::min(row.cost_ratio_min, r.ratio);
+  row.cost_ratio_max = std::max(row.cost_ratio_max, r.ratio);
+  if (first || row.cost_source == CostSource::kHistory) row.cost_source = r.source;
+}
+
+Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
+               const CostHistory& history) {
   (void)study;
   Plan plan;
   plan.workers = std::max(1, workers);
@@ -38,22 +55,12 @@ Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, i
   plan.rows.resize(expanded.series.size());
   for (std::size_t s = 0; s < expanded.series.size(); ++s) plan.rows[s].series = expanded.series[s].label();
   for (const auto& job : expanded.jobs) {
-    auto& row = plan.rows[job.series];
-    const auto n = static_cast<std::uint64_t>(cell_count(job.cells));
-    row.grids += 1;
-    row.cells += n;
-    row.largest_cells = std::max(row.largest_cells, n);
-    row.memory_bytes = std::max(row.memory_bytes, estimated_memory_bytes(job.cells));
-    row.seconds += estimated_seconds(job.cells, threads);
+    plan.rows[job.series].grids += 1;
+    add_job(plan.rows[job.series], job.cells, job_cost_ratio(history, job.doc, job.cells), threads);
   }
   for (const auto& a : expanded.alignment) {  // alignment-check variants: solved like the grids
-    auto& row = plan.rows[a.series];
-    const auto n = static_cast<std::uint64_t>(cell_count(a.cells));
-    row.alignment_jobs += 1;
-    row.cells += n;
-    row.largest_cells = std::max(row.largest_cells, n);
-    row.memory_bytes = std::max(row.memory_bytes, estimated_memory_bytes(a.cells));
-    row.seconds += estimated_seconds(a.cells, threads);
+    plan.rows[a.series].alignment_jobs += 1;
+    add_job(plan.rows[a.series], a.cells, job_cost_ratio(history, a.doc, a.cells), threads);
   }
   plan.jobs = expanded.jobs.size() + expanded.alignment.size();
   for (const auto& row : plan.rows) {
@@ -82,7 +89,10 @@ nlohmann::json plan_to_json(const Plan& plan) {
                     {"cells", r.cells},
                     {"largest_cells", r.largest_cells},
                     {"memory_bytes", r.memory_bytes},
-                    {"seconds", r.seconds}});
+                    {"seconds", r.seconds},
+                    {"cost_source", cost_source_name(r.cost_source)},
+                    {"cost_ratio", {r.cost_ratio_min, r.cost_ratio_max}},
+                    {"cost_basis", r.cost_basis}});
   return {{"series", rows},
           {"jobs", plan.jobs},
           {"cells", plan.cells},
@@ -94,7 +104,8 @@ nlohmann::json plan_to_json(const Plan& plan) {
           {"model",
            {{"bytes_per_cell", kWorkerBytesPerCell},
             {"seconds_per_cell_iteration", kSecondsPerCellIteration},
-            {"iterations", iterations_model_text()}}}};
+            {"iterations", iterations_model_text()},
+            {"time", "cost_ratio * iterations * cells * seconds_per_cell_iteration / threads_per_worker"}}}};
 }
 
 std::string human_bytes(double bytes) {
@@ -120,28 +131,43 @@ std::string human_seconds(double s) {
   return buf;
 }
 
+// "history × 1.2–2.7", "a-priori × 2".
+static std::string cost_column(const PlanRow& r) {
+  char buf[64];
+  if (r.cost_ratio_max > r.cost_ratio_min * 1.0005)
+    std::snprintf(buf, sizeof buf, "%s x %.3g-%.3g", cost_source_name(r.cost_source).c_str(), r.cost_ratio_min,
+                  r.cost_ratio_max);
+  else
+    std::snprintf(buf, sizeof buf, "%s x %.3g", cost_source_name(r.cost_source).c_str(), r.cost_ratio_max);
+  return buf;
+}
+
 std::string plan_to_table(const Plan& plan) {
   std::string out;
-  char line[256];
-  std::snprintf(line, sizeof line, "%-40s %5s %12s %12s %12s\n", "series", "grids", "cells",
-                "max memory", "est. time");
+  char line[320];
+  std::snprintf(line, sizeof line, "%-40s %5s %12s %12s %12s  %s\n", "series", "grids", "cells", "max memory",
+                "est. time", "cost ratio");
   out += line;
+  std::vector<std::pair<std::string, std::string>> bases;  // first series with each distinct basis
   for (const auto& r : plan.rows) {
-    std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s\n", r.series.c_str(), r.grids,
+    std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s  %s\n", r.series.c_str(), r.grids,
                   static_cast<unsigned long long>(r.cells), human_bytes(r.memory_bytes).c_str(),
-                  human_seconds(r.seconds).c_str());
+                  human_seconds(r.seconds).c_str(), cost_column(r).c_str());
     out += line;
+    if (std::none_of(bases.begin(), bases.end(), [&](const auto& x) { return x.second == r.cost_basis; }))
+      bases.emplace_back(r.series, r.cost_basis);
   }
   std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s\n", "total (jobs)", plan.jobs,
                 static_cast<unsigned long long>(plan.cells),
                 human_bytes(plan.max_memory_bytes).c_str(), human_seconds(plan.seconds).c_str());
   out += line;
   std::snprintf(line, sizeof line,
-                "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell, %.1e s per "
-                "cell-iteration)\n",
+                "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell; time = cost ratio x "
+                "iterations x cells x %.1e s, iterations %s)\n",
                 plan.workers, plan.threads_per_worker, human_seconds(plan.wall_seconds).c_str(), kWorkerBytesPerCell,
-                kSecondsPerCellIteration);
+                kSecondsPerCellIteration, iterations_model_text().c_str());
   out += line;
+  for (const auto& [series, b] : bases) out += "cost ratio, largest grid of " + series + ": " + b + "\n";
   return out;
 }
 

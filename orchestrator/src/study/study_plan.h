@@ -2,9 +2,13 @@
 // job from its cell count. The constants are the one place to tune them.
 //
 //   memory(N) = kWorkerBytesPerCell · N + kWorkerBaseBytes (job/memory_estimate.h)
-//   time(N)   = kIterationsEstimate(N) · N · kSecondsPerCellIteration / threads
+//   time(N)   = r · iterations(N) · N · kSecondsPerCellIteration / threads
 //   iterations(N) ≈ kBaseIterations + kIterationsPerCellRoot · N^(1/3)
 //   (SIMPLE-type outer iterations grow roughly with the cells along a line)
+//
+// r is the job's cost ratio (study/cost_model.h): 1 for the bursting bubble
+// the base model was fitted to, from finished similar jobs in the database
+// or a-priori from the case's physics otherwise.
 #pragma once
 
 #include <array>
@@ -14,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/cost_model.h"
 #include "study/study.h"
 
 namespace gridfree {
@@ -35,7 +40,8 @@ inline constexpr double kSecondsPerCellIteration = 1.8e-6;  // one core
 std::uint64_t physical_memory_bytes();  // sysconf(_SC_PHYS_PAGES) · page size
 double estimated_memory_bytes(const std::array<int, 3>& cells);
 double estimated_iterations(const std::array<int, 3>& cells);
-double estimated_seconds(const std::array<int, 3>& cells, int threads);
+double base_cpu_seconds(double cells);  // r = 1, one thread
+double estimated_seconds(const std::array<int, 3>& cells, int threads, double cost_ratio = 1);
 
 struct PlanRow {
   std::string series;            // label
@@ -45,6 +51,9 @@ struct PlanRow {
   std::uint64_t largest_cells = 0;
   double memory_bytes = 0;       // of the largest grid
   double seconds = 0;            // summed over grids (one worker)
+  CostSource cost_source = CostSource::kAPriori;  // history when every job's ratio came from it
+  double cost_ratio_min = 0, cost_ratio_max = 0;  // r over the series' jobs
+  std::string cost_basis;        // of the series' largest grid
 };
 
 struct Plan {
@@ -58,7 +67,10 @@ struct Plan {
   double wall_seconds = 0;       // seconds / workers (perfect packing, a lower bound)
 };
 
-Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores);
+// `history`: finished jobs of a database (sched/cost_history.h), empty for
+// the a-priori model alone.
+Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
+               const CostHistory& history = {});
 nlohmann::json plan_to_json(const Plan& plan);
 std::string plan_to_table(const Plan& plan);
 std::string human_bytes(double bytes);

@@ -57,7 +57,7 @@ std::vector<std::pair<double, std::array<int, 3>>> candidate_grids(const Study& 
   return out;
 }
 
-TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model) {
+TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model, const CostHistory& history) {
   TargetPlan plan;
   plan.target_rde = target;
   plan.model = model;
@@ -68,13 +68,18 @@ TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model)
     cp.series = static_cast<std::size_t>(
         std::count_if(series.begin(), series.end(), [&](const SeriesKey& k) { return k.case_name == c.name; }));
     const auto ds = candidate_grids(s, c);
+    const auto first = std::find_if(series.begin(), series.end(), [&](const SeriesKey& k) { return k.case_name == c.name; });
     std::size_t first_met = ds.size();
     for (std::size_t k = 0; k < ds.size(); ++k) {
       TargetGrid g;
       g.delta_star = ds[k].first;
       g.cells = ds[k].second;
       g.predicted_rde = model.predict(g.delta_star);
-      g.cpu_s = model.cost_scale * estimated_seconds(g.cells, 1);
+      const auto doc = first != series.end() ? make_job_document(s, *first, g.cells) : nlohmann::json{{"case", c.doc}};
+      const CostRatio r = job_cost_ratio(history, doc, g.cells);
+      const bool measured = r.source == CostSource::kHistory;
+      g.cpu_s = (measured ? r.ratio : model.cost_scale * r.ratio) * estimated_seconds(g.cells, 1);
+      cp.costs_from_history = cp.costs_from_history || measured;
       g.memory_bytes = estimated_memory_bytes(g.cells);
       if (first_met == ds.size() && g.predicted_rde <= target) first_met = k;
       cp.grids.push_back(g);
@@ -99,10 +104,10 @@ std::string rde_model_text(const RdeModel& m) {
   if (m.a_priori)
     return out + " — a-priori: no finished similar series in the database; p = 1 and the coefficient "
                  "assumed from the bursting-bubble baseline (RDE 0.78 % at Δ* 0.564, docs/BENCHMARKS.md); "
-                 "costs from the cost model alone";
+                 "costs from the a-priori cost model (study/cost_model.h)";
   return out + " — fitted to " + std::to_string(m.points) + " (Δ*, RDE) of " + std::to_string(m.similar_series) +
-         " finished similar series; costs from the cost model × " + fmt("%.3g", m.cost_scale) +
-         " (their measured CPU time / the model's)";
+         " finished similar series; costs from the a-priori cost model × " + fmt("%.3g", m.cost_scale) +
+         " (their measured CPU time / the a-priori model's)";
 }
 
 nlohmann::json target_plan_json(const TargetPlan& p) {
@@ -122,6 +127,7 @@ nlohmann::json target_plan_json(const TargetPlan& p) {
                      {"grids_needed", c.grids_needed},
                      {"core_hours_per_series", c.cpu_s_per_series / 3600},
                      {"peak_memory_bytes", c.peak_memory_bytes},
+                     {"costs_from_history", c.costs_from_history},
                      {"grids", grids}});
   }
   return {{"target_rde", p.target_rde},
@@ -143,7 +149,8 @@ std::string target_plan_text(const TargetPlan& p) {
   std::string out = "target RDE " + pct(p.target_rde) + ": " + rde_model_text(p.model) + "\n";
   char line[256];
   for (const auto& c : p.cases) {
-    out += "\ncase " + c.case_name + " (" + std::to_string(c.series) + " series):\n";
+    out += "\ncase " + c.case_name + " (" + std::to_string(c.series) + " series)" +
+           (c.costs_from_history ? "; costs from its finished similar jobs (the plan's cost ratio)" : "") + ":\n";
     std::snprintf(line, sizeof line, "  %-8s %-16s %14s %14s %12s  %s\n", "Δ*", "cells", "predicted RDE", "core-hours",
                   "memory", "needed");
     out += line;

@@ -14,8 +14,11 @@
 // whose predicted RDE ≤ target, at least kMinGridsForConverged (a `converged`
 // verdict needs n − 3 ≥ 2 degrees of freedom, docs/EXTRAPOLATION.md
 // "Verdicts"; an adaptive series stops at its fifth grid at the earliest). Cost:
-// the cost model's one-thread CPU time (study/study_plan.h) times the
-// measured scale s of the similar series (Σ cpu_s / Σ model; 1 without them),
+// the plan's history rule where the database holds jobs similar to the
+// grid's (study/cost_model.h), else the a-priori cost model's one-thread
+// CPU time (study/study_plan.h with the case's a-priori ratio) times the
+// measured scale s of the similar series (Σ cpu_s / Σ a-priori model; 1
+// without them),
 // peak memory the largest needed grid's estimate.
 #pragma once
 
@@ -26,6 +29,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/cost_model.h"
 #include "study/study.h"
 
 namespace gridfree {
@@ -64,6 +68,7 @@ struct TargetCasePlan {
   bool reachable = false;                   // some candidate grid meets the target
   double cpu_s_per_series = 0;              // needed grids
   double peak_memory_bytes = 0;
+  bool costs_from_history = false;          // some grid's cost ratio came from finished similar jobs
 };
 
 struct TargetPlan {
@@ -78,7 +83,11 @@ struct TargetPlan {
 // the nominal Δ* where the study gives them, else the cells' actual Δ*.
 std::vector<std::pair<double, std::array<int, 3>>> candidate_grids(const Study& study, const StudyCase& c);
 
-TargetPlan plan_for_target(const Study& study, double target_rde, const RdeModel& model);
+// `history` (sched/cost_history.h): where it holds finished jobs similar to
+// a grid's job (of the case's first series), that grid's cost is the plan's
+// history rule (study/cost_model.h) instead of cost_scale × the a-priori model.
+TargetPlan plan_for_target(const Study& study, double target_rde, const RdeModel& model,
+                           const CostHistory& history = {});
 std::string rde_model_text(const RdeModel& model);  // the model and what it rests on
 nlohmann::json target_plan_json(const TargetPlan& plan);
 std::string target_plan_text(const TargetPlan& plan);

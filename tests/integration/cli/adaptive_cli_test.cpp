@@ -217,6 +217,12 @@ TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto plan = nlohmann::json::parse(r.out)["target"];
   EXPECT_TRUE(plan["model"]["a_priori"].get<bool>());
+  EXPECT_EQ(nlohmann::json::parse(r.out)["series"][0]["cost_source"], "a-priori");  // docs/ORCHESTRATOR.md "Cost model"
+  std::ofstream(dir / "garbage.sqlite") << "not a database";  // refused, named, left as it was
+  const auto bad = gridfree_in(dir, "plan fixed.json --db garbage.sqlite");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--db"), std::string::npos) << bad.err;
+  EXPECT_EQ(fs::file_size(dir / "garbage.sqlite"), std::string("not a database").size());
   EXPECT_DOUBLE_EQ(plan["model"]["p"].get<double>(), 1.0);
   EXPECT_FALSE(fs::exists(dir / "none.sqlite"));
   r = gridfree_in(dir, "plan fixed.json --target-rde 0.001");
@@ -227,6 +233,12 @@ TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   plan = nlohmann::json::parse(r.out)["target"];
   EXPECT_FALSE(plan["model"]["a_priori"].get<bool>());
+  // The study's own finished jobs calibrate its time estimate: each grid's
+  // ratio is the median of measured CPU / base model over the finished jobs
+  // nearest in cell count, so it lies within their ratios' range.
+  const auto row = nlohmann::json::parse(r.out)["series"][0];
+  EXPECT_EQ(row["cost_source"], "history") << row.dump();
+  EXPECT_GT(row["cost_ratio"][0].get<double>(), 0.0) << row.dump();
   EXPECT_EQ(plan["model"]["similar_series"], 1);
   // Independent least squares of log RDE on log Δ* over the stored rows.
   std::stringstream rows(sql(dir / "g.sqlite", "SELECT delta_star, rde FROM uncertainties"));

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "study/study_plan.h"
 #include "study/target_plan.h"
 
 namespace gridfree {
@@ -78,6 +79,29 @@ TEST(TargetPlan, CostScaleMultipliesTheCostModel) {
   m.cost_scale = 3;
   const auto three = plan_for_target(quickstart(), 0.01, m);
   EXPECT_NEAR(three.total_cpu_s, 3 * one.total_cpu_s, 1e-9 * one.total_cpu_s);
+}
+
+// Finished similar jobs (the plan's history rule, study/cost_model.h) set a
+// grid's cost in place of cost_scale × the a-priori model: one sample at
+// ratio 1.7 of the base model makes every grid cost 1.7 × base.
+TEST(TargetPlan, HistoryOfSimilarJobsSetsTheCosts) {
+  const Study s = quickstart();
+  RdeModel m;
+  m.cost_scale = 3;  // not used where the history applies
+  const auto key = design_series(s).front();
+  const auto cells = grids_for_case(s, s.cases.front()).front();
+  const double n = static_cast<double>(cells[0]) * cells[1] * cells[2];
+  CostHistory history;
+  history[cost_similarity_key(make_job_document(s, key, cells))] = {{n, 1.7 * base_cpu_seconds(n)}};
+  const auto plan = plan_for_target(s, 0.01, m, history);
+  ASSERT_FALSE(plan.cases.front().grids.empty());
+  EXPECT_TRUE(plan.cases.front().costs_from_history);
+  for (const auto& g : plan.cases.front().grids) {
+    const double base = base_cpu_seconds(static_cast<double>(g.cells[0]) * g.cells[1] * g.cells[2]);
+    EXPECT_NEAR(g.cpu_s, 1.7 * base, 1e-9 * base);
+  }
+  EXPECT_TRUE(target_plan_json(plan)["cases"][0]["costs_from_history"].get<bool>());
+  EXPECT_FALSE(plan_for_target(s, 0.01, m).cases.front().costs_from_history);
 }
 
 }  // namespace
