@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   app.add_option("--anderson", anderson, "Anderson depth (0 = off)")->check(CLI::NonNegativeNumber);
   app.add_option("--newton-krylov", newton_krylov, "GMRES restart length of Newton-Krylov (0 = off)")
       ->check(CLI::NonNegativeNumber);
+  bool drag_in_map = false;
+  app.add_flag("--nk-drag-in-map", drag_in_map, "Newton-Krylov: update the drag in every G evaluation");
   app.add_option("--fas", fas, "two-grid FAS: fine SIMPLEC sweeps per cycle (0 = off)")->check(CLI::NonNegativeNumber);
   app.add_option("--fas-coarse", fas_coarse, "two-grid FAS: coarse sweeps per cycle")->check(CLI::PositiveNumber);
   app.add_option("--relax-u", relax_u, "momentum under-relaxation")->check(CLI::Range(0.05, 0.99));
@@ -41,6 +43,7 @@ int main(int argc, char** argv) {
   options.nested_start = start == "nested";
   options.simple.anderson_depth = anderson;
   options.simple.newton_krylov_restart = newton_krylov;
+  options.simple.newton_krylov_drag_in_map = drag_in_map;
   options.simple.fas_smoothing_sweeps = fas;
   options.simple.fas_coarse_sweeps = fas_coarse;
   options.simple.relax_u = relax_u;
@@ -56,9 +59,9 @@ int main(int argc, char** argv) {
   if (r.extra.contains("fas"))
     newton += ", " + std::to_string(r.extra["fas"]["cycles"].get<int>()) + " FAS cycles with " +
               std::to_string(r.extra["fas"]["coarse_sweeps"].get<int>()) + " coarse sweeps";
-  std::printf("%s start=%s anderson=%d newton_krylov=%d fas=%d/%d relax_u=%.2f: %s, %d sweeps (coarse %s)%s, "
+  std::printf("%s start=%s anderson=%d newton_krylov=%d%s fas=%d/%d relax_u=%.2f: %s, %d sweeps (coarse %s)%s, "
               "dp_star %.10g, wall %.1f s, cpu %.1f s, rss %.1f MB\n",
-              job_file.c_str(), start.c_str(), anderson, newton_krylov, fas, fas_coarse, relax_u,
+              job_file.c_str(), start.c_str(), anderson, newton_krylov, drag_in_map ? "+drag" : "", fas, fas_coarse, relax_u,
               std::string(solve_status_name(r.status)).c_str(), r.iterations, coarse.empty() ? "-" : coarse.c_str(),
               newton.c_str(), r.dp_star.value_or(0.0), r.wall_s, r.cpu_s, r.peak_rss_mb);
   return r.status == SolveStatus::kConverged ? 0 : 3;

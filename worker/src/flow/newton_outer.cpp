@@ -68,6 +68,11 @@ SimpleOutcome run_newton_krylov(const FlowProblem& problem, const SimpleSettings
   SweepCounts counts;
   auto evaluate = [&](const std::vector<double>& x, std::vector<double>& f, const SweepCounts* replay) {
     unpack(x, state.u, state.p);
+    if (drag && settings.newton_krylov_drag_in_map) {
+      const auto t0 = std::chrono::steady_clock::now();
+      drag(state, state.drag);
+      out.seconds.drag += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
     const SweepReport r = simplec_sweep(problem, settings, state, *ws, &out.seconds, replay);
     ++evaluations;
     if (r.linear_failures) out.linear_failures = true;
@@ -85,7 +90,7 @@ SimpleOutcome run_newton_krylov(const FlowProblem& problem, const SimpleSettings
     // 1. Drag from x_k, held for the step.
     unpack(x, state.u, state.p);
     auto t0 = std::chrono::steady_clock::now();
-    if (drag) drag(state, state.drag);
+    if (drag && !settings.newton_krylov_drag_in_map) drag(state, state.drag);
     out.seconds.drag += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     // 2. Base evaluation: the monitor, and the inner counts to replay.

@@ -50,6 +50,9 @@ struct SimpleSettings {
   // GMRES restart length m of the Newton–Krylov prototype (flow/newton_outer.h);
   // 0 = off: plain SIMPLEC (docs/DESIGN.md "Outer convergence").
   int newton_krylov_restart = 0;
+  // Newton–Krylov only: recompute β, βv̄ in every evaluation of G (G is then
+  // the drag-coupled map) instead of once per Newton step.
+  bool newton_krylov_drag_in_map = false;
   // Two-grid FAS prototype (flow/two_grid_fas.h): fine SIMPLEC sweeps per
   // cycle (0 = off) and coarse sweeps per cycle.
   int fas_smoothing_sweeps = 0;
