@@ -62,7 +62,8 @@ TEST(NewtonKrylovBubble, ReachesTheSimplecFixedPointWithinTheIterativeTolerance)
   // Both stop when dp* changed by < 1e-5 relative over their last 10
   // sweeps (SIMPLEC) or their last Newton step (Newton–Krylov), with the
   // residuals below 1e-5: their distance to the fixed point is of that
-  // order. 1e-5 is the brief's bar for an unchanged answer.
+  // order. 1e-5 is the bar for an unchanged answer (docs/DESIGN.md,
+  // "Outer convergence").
   EXPECT_LT(nk_error, 1e-5) << "NK " << *nk.dp_star << " ref " << *ref.dp_star;
   EXPECT_LT(simplec_error, 1e-5);
   EXPECT_GT(nk.extra["newton_krylov"]["steps"].get<int>(), 0);
