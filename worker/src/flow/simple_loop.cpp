@@ -10,10 +10,8 @@
 
 #include "flow/anderson.h"
 #include "flow/iterative_error.h"
-#include "flow/mass_flux.h"
-#include "flow/momentum.h"
-#include "flow/pressure_correction.h"
 #include "flow/residuals.h"
+#include "flow/simplec_sweep.h"
 
 namespace gridfree {
 namespace {
@@ -26,31 +24,6 @@ std::string format_number(double x) {
   s << x;
   return s.str();
 }
-
-// The face grid of the component with the most faces.
-Grid largest_face_grid(const Grid& g) {
-  int best = 0;
-  for (int a = 1; a < 3; ++a)
-    if (FaceLayout(g, a).size() > FaceLayout(g, best).size()) best = a;
-  return FaceLayout(g, best).as_grid(g);
-}
-
-// Everything the loop keeps across outer iterations. The work of one phase
-// (the linear solvers' vectors, the pressure multigrid hierarchy, p') is
-// allocated in that phase and freed at its end, so the phases share memory
-// instead of each holding its own (docs/SOLVER.md "Memory").
-struct Workspace {
-  explicit Workspace(const Grid& g) : momentum(largest_face_grid(g)) {}
-  // One system for the three momentum components in turn (each is
-  // assembled and solved before the next), whose stencil then holds the
-  // pressure correction (assembled afresh each iteration): a quarter of the
-  // memory of four systems.
-  MomentumSystem momentum;
-  // F of the iterate entering the iteration (the momentum assembly's lagged
-  // fluxes); the pressure correction then overwrites it with F of u*.
-  FaceVector mass_flux;
-  FaceVector d;  // SIMPLEC coefficients
-};
 
 // Adds the seconds since the last call (or construction) to a total.
 class PhaseClock {
@@ -72,7 +45,7 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
                          const QuantityOfInterest& qoi, const IterationCallback& on_iteration,
                          const LoopControl& control) {
   const Grid& g = problem.grid;
-  auto ws = std::make_unique<Workspace>(g);
+  auto ws = std::make_unique<SweepWorkspace>(g);
   update_eps_faces(problem, state);
   apply_fixed_faces(problem, state);
   if (state.drag.beta.empty()) state.drag.beta.assign(g.cells(), 0.0);
@@ -80,8 +53,6 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
   SimpleOutcome out;
   std::deque<double> qoi_history;
   double first_continuity = -1, first_momentum = -1;
-  const LinearSolverSettings momentum_solver{settings.momentum_tolerance, settings.linear_max_iterations};
-  const LinearSolverSettings pressure_solver{settings.pressure_tolerance, settings.linear_max_iterations};
   std::unique_ptr<AndersonMixer> mixer;
   std::vector<double> x_entering;
   if (settings.anderson_depth > 0) mixer = std::make_unique<AndersonMixer>(settings.anderson_depth);
@@ -105,49 +76,16 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     clock.charge(out.seconds.drag);
 
     if (mixer) AndersonMixer::pack(state.u, state.p, x_entering);
-    // 2. Momentum predictor: u* for each component with lagged mass fluxes.
-    compute_mass_fluxes(problem, state, ws->mass_flux);
-    double momentum_residual = 0, momentum_scale = 0;
-    {
-      const CellField divergence = velocity_divergence(g, state.u);
-      for (int a = 0; a < 3; ++a) {
-        MomentumSystem& sys = ws->momentum;
-        reshape_stencil(sys.eq, FaceLayout(g, a).as_grid(g));
-        assemble_momentum(problem, state, ws->mass_flux, divergence, a, settings.relax_u, sys, ws->d[a]);
-        momentum_residual += sys.residual;
-        momentum_scale += sys.scale;
-        // Inexact solve: reduce this component's residual ||r||/||b|| 10×
-        // (clamped to [linear_floor, momentum_tolerance]).
-        LinearSolverSettings solver = momentum_solver;
-        solver.tolerance = std::clamp(0.1 * normalized(sys.residual_l2, sys.rhs_l2), settings.linear_floor,
-                                      settings.momentum_tolerance);
-        const LinearSolveStats st = solve_general(sys.eq, state.u[a].values, solver);
-        report.momentum_iterations += st.iterations;
-        if (!st.converged) out.linear_failures = true;
-      }
-    }  // ∇·u is freed here
-    clock.charge(out.seconds.momentum);
-
-    // 3. Pressure correction: p ← p + α_p p', u ← u* + d ∇p'. Its multigrid
-    // hierarchy is rebuilt for new coefficients every iteration anyway, so
-    // it lives only for this step.
-    const double continuity_scale = continuity_reference(ws->mass_flux);
-    reshape_stencil(ws->momentum.eq, g);
-    PressureCorrectionResult pc;
-    {
-      SymmetricSolver pressure_linear_solver;
-      std::vector<double> p_prime;
-      pc = correct_pressure(problem, state, ws->d, settings.relax_p, pressure_solver, ws->momentum.eq,
-                            pressure_linear_solver, p_prime, ws->mass_flux);
-    }
-    report.pressure_iterations = pc.solve.iterations;
+    // 2–3. Momentum predictor and pressure correction (simplec_sweep.h).
+    const SweepReport sweep = simplec_sweep(problem, settings, state, *ws, &out.seconds);
+    report.momentum_iterations = sweep.momentum_iterations;
+    report.pressure_iterations = sweep.pressure_iterations;
+    if (sweep.linear_failures) out.linear_failures = true;
     if (mixer) mixer->mix(x_entering, state.u, state.p);
-    if (!pc.solve.converged) out.linear_failures = true;
-    clock.charge(out.seconds.pressure);
 
     // 4. Monitor: residuals, quantity of interest, status.
-    report.continuity = normalized(pc.imbalance, continuity_scale);
-    report.momentum = normalized(momentum_residual, momentum_scale);
+    report.continuity = sweep.continuity;
+    report.momentum = sweep.momentum;
     if (qoi) {
       report.qoi = qoi(state);
       qoi_history.push_back(*report.qoi);

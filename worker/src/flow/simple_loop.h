@@ -47,6 +47,16 @@ struct SimpleSettings {
   // Anderson acceleration depth of the outer iterations (flow/anderson.h);
   // 0 = off (the default: see docs/DESIGN.md for what it measured).
   int anderson_depth = 0;
+  // GMRES restart length m of the Newton–Krylov prototype (flow/newton_outer.h);
+  // 0 = off: plain SIMPLEC (docs/DESIGN.md "Outer convergence").
+  int newton_krylov_restart = 0;
+  // Newton–Krylov only: recompute β, βv̄ in every evaluation of G (G is then
+  // the drag-coupled map) instead of once per Newton step.
+  bool newton_krylov_drag_in_map = false;
+  // Two-grid FAS prototype (flow/two_grid_fas.h): fine SIMPLEC sweeps per
+  // cycle (0 = off) and coarse sweeps per cycle.
+  int fas_smoothing_sweeps = 0;
+  int fas_coarse_sweeps = 10;
 };
 
 struct IterationReport {
@@ -81,6 +91,8 @@ struct SimpleOutcome {
   PhaseSeconds seconds;
   bool linear_failures = false;  // some linear solve missed its tolerance
   bool stopped = false;          // LoopControl::stop_requested ended it early
+  int newton_steps = 0;          // Newton–Krylov only: steps taken
+  int newton_fallbacks = 0;      // of which plain SIMPLEC steps (line search failed)
 };
 
 // Stop and resume (flow/checkpoint.h): the loop's own state, besides

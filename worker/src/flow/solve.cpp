@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <cmath>
 #include <spdlog/spdlog.h>
@@ -13,7 +14,9 @@
 #include "coupling/solids_fraction.h"
 #include "flow/checkpoint.h"
 #include "flow/initial_state.h"
+#include "flow/fas_coarse_level.h"
 #include "flow/mass_flux.h"
+#include "flow/newton_outer.h"
 #include "flow/probes.h"
 #include "flow/prolong.h"
 #include "flow/vtk_writer.h"
@@ -202,10 +205,13 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
   };
   FlowState state;
   warm_start(problem, sf.eps_s, drag, state, options.cold_start);
+  std::unique_ptr<FasCoarseLevel> fas_coarse;  // the two-grid FAS prototype's coarse level
   if (coarse) {
     state.p = prolong_cells(coarse->grid, coarse->p, g);
     state.u = prolong_faces(coarse->grid, coarse->u, g);
     result.extra["nested_start"] = coarse->levels;
+    if (options.simple.fas_smoothing_sweeps > 0)
+      fas_coarse = make_fas_coarse_level(job, particles, coarse->grid, std::move(coarse->p), std::move(coarse->u));
     coarse.reset();
   }
   LoopControl control;
@@ -234,7 +240,18 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
 
   const SimpleSettings settings = simple_settings_for(num, options.simple);
   const auto t_iter = Clock::now();
-  const SimpleOutcome out = run_simple(problem, settings, state, drag, qoi, options.on_iteration, control);
+  SimpleOutcome out;
+  if (fas_coarse) {
+    const FasOutcome fas =
+        run_two_grid_fas(FasLevel{&problem, &state, drag}, fas_coarse->level, settings, qoi, options.on_iteration);
+    out = fas.outcome;
+    result.extra["fas"] = {{"cycles", fas.cycles}, {"coarse_sweeps", fas.coarse_sweeps}};
+    fas_coarse.reset();
+  } else if (settings.newton_krylov_restart > 0) {
+    out = run_newton_krylov(problem, settings, state, drag, qoi, options.on_iteration, control);
+  } else {
+    out = run_simple(problem, settings, state, drag, qoi, options.on_iteration, control);
+  }
   const double t_iterations = seconds_since(t_iter);
   if (out.stopped) throw SolveStopped(out.iterations, checkpoint_written);
 
@@ -262,6 +279,15 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
                               {"momentum_tolerance", settings.momentum_tolerance},
                               {"pressure_tolerance", settings.pressure_tolerance},
                               {"drag_interval", settings.drag_interval}};
+  if (result.extra.contains("fas")) {
+    result.extra["settings"]["algorithm"] = "two-grid FAS with SIMPLEC smoothing";
+    result.extra["settings"]["fas_smoothing_sweeps"] = settings.fas_smoothing_sweeps;
+    result.extra["settings"]["fas_coarse_sweeps"] = settings.fas_coarse_sweeps;
+  } else if (settings.newton_krylov_restart > 0) {
+    result.extra["settings"]["algorithm"] = "Newton-Krylov on SIMPLEC";
+    result.extra["settings"]["gmres_restart"] = settings.newton_krylov_restart;
+    result.extra["newton_krylov"] = {{"steps", out.newton_steps}, {"fallbacks", out.newton_fallbacks}};
+  }
   if (out.linear_failures) result.extra["linear_solver_warnings"] = true;
   if (particle_drag) {
     result.extra["drag_updates"] = particle_drag->updates();
