@@ -145,6 +145,31 @@ TEST(BurstingBubble, NestedStartReachesTheSameAnswer) {
   EXPECT_FALSE(a.extra.contains("nested_start"));
 }
 
+// A coarse level that does not converge within nested_max_iterations is
+// abandoned: it is still reported (status, iterations), and the fine grid
+// starts from the analytic warm start, so it does exactly what a run without
+// the nested start does (same iterations, same bits).
+TEST(BurstingBubble, AnAbandonedCoarseLevelIsReportedAndTheFineGridStartsAnalytically) {
+  const JobSpec job = baseline(2.0);
+  const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
+  SolveOptions plain;
+  plain.nested_start = false;
+  SolveOptions capped;
+  capped.nested_min_cells = 1000;
+  capped.nested_max_iterations = 3;
+  const JobResult a = solve_with_particles(job, set, plain);
+  const JobResult b = solve_with_particles(job, set, capped);
+  ASSERT_EQ(a.status, SolveStatus::kConverged) << a.reason;
+  ASSERT_EQ(b.status, SolveStatus::kConverged) << b.reason;
+  ASSERT_TRUE(b.extra.contains("nested_start"));
+  const auto& level = b.extra["nested_start"].back();
+  EXPECT_EQ(level["status"], "not_converged");
+  EXPECT_EQ(level["iterations"], 3);
+  EXPECT_EQ(level["cells"], (std::array<int, 3>{8, 50, 3}));
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_EQ(*a.dp_star, *b.dp_star);
+}
+
 TEST(BurstingBubble, NestedStartDoesNotDependOnTheThreadCount) {
   const JobSpec job = baseline(2.0);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);

@@ -43,11 +43,13 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// A converged solution on a coarser grid: the nested start of a finer one.
+// A solution on a coarser grid: the nested start of a finer one, used only
+// when `converged`.
 struct CoarseSolution {
   Grid grid;
   CellField p;
   FaceVector u;
+  bool converged = false;
   nlohmann::json levels = nlohmann::json::array();  // what each coarser solve did, coarsest first
 };
 
@@ -67,14 +69,17 @@ std::optional<std::array<int, 3>> coarser_cells(const std::array<int, 3>& n, std
 JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const SolveOptions& options,
                      CoarseSolution* keep);
 
-// Solves the job on the coarser grid (itself started the same way) and
-// returns its solution if it converged.
+// Solves the job on the coarser grid (itself started the same way), at
+// most options.nested_max_iterations outer iterations; nullopt when the
+// grid has no coarser level. The levels are reported whether or not the
+// coarse solve converged.
 std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet& particles,
                                            const SolveOptions& options) {
   const auto cells = coarser_cells(job.numerics.cells, options.nested_min_cells);
   if (!cells) return std::nullopt;
   JobSpec coarse = job;
   coarse.numerics.cells = *cells;
+  coarse.numerics.max_iterations = std::min(job.numerics.max_iterations, options.nested_max_iterations);
   SolveOptions quiet = options;
   quiet.on_iteration = {};
   quiet.vtk_dir.reset();
@@ -83,15 +88,14 @@ std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet
   spdlog::info("nested start: solving on {}x{}x{} cells first", (*cells)[0], (*cells)[1], (*cells)[2]);
   CoarseSolution sol;
   const JobResult r = solve_grid(coarse, particles, quiet, &sol);
+  sol.converged = r.status == SolveStatus::kConverged;
   sol.levels.push_back({{"cells", *cells},
                         {"status", solve_status_name(r.status)},
                         {"iterations", r.iterations},
                         {"wall_s", r.wall_s}});
-  if (r.status != SolveStatus::kConverged) {
-    spdlog::info("nested start: the coarse solve ended {}; starting from the analytic warm start",
-                 solve_status_name(r.status));
-    return std::nullopt;
-  }
+  if (!sol.converged)
+    spdlog::info("nested start: the coarse solve ended {} after {} iterations; starting from the analytic warm start",
+                 solve_status_name(r.status), r.iterations);
   return sol;
 }
 
@@ -207,11 +211,13 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
   warm_start(problem, sf.eps_s, drag, state, options.cold_start);
   std::unique_ptr<FasCoarseLevel> fas_coarse;  // the two-grid FAS prototype's coarse level
   if (coarse) {
-    state.p = prolong_cells(coarse->grid, coarse->p, g);
-    state.u = prolong_faces(coarse->grid, coarse->u, g);
     result.extra["nested_start"] = coarse->levels;
-    if (options.simple.fas_smoothing_sweeps > 0)
-      fas_coarse = make_fas_coarse_level(job, particles, coarse->grid, std::move(coarse->p), std::move(coarse->u));
+    if (coarse->converged) {
+      state.p = prolong_cells(coarse->grid, coarse->p, g);
+      state.u = prolong_faces(coarse->grid, coarse->u, g);
+      if (options.simple.fas_smoothing_sweeps > 0)
+        fas_coarse = make_fas_coarse_level(job, particles, coarse->grid, std::move(coarse->p), std::move(coarse->u));
+    }
     coarse.reset();
   }
   LoopControl control;

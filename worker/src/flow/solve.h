@@ -29,6 +29,10 @@ struct SolveOptions {
   // off with cold_start.
   bool nested_start = true;
   std::size_t nested_min_cells = 20000;  // no nested start below this many cells
+  // A coarse level that has not converged after this many outer iterations
+  // (or the job's max_iterations, if fewer) is abandoned and the grid above
+  // it starts from the analytic warm start (docs/SOLVER.md, "Nested start").
+  int nested_max_iterations = 1000;
   // Called after every outer iteration (progress output).
   IterationCallback on_iteration;
   // Stop and resume (flow/checkpoint.h, docs/INTERFACE.md §2). Polled after
