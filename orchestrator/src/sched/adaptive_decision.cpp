@@ -1,6 +1,8 @@
 // decide_adaptive_step (sched/adaptive_decision.h).
 #include "sched/adaptive_decision.h"
 
+#include "study/format_number.h"
+
 #include <cstdio>
 
 #include "study/study_plan.h"
@@ -8,22 +10,16 @@
 namespace gridfree {
 namespace {
 
-std::string num(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+std::string percent(double fraction) { return format_number("%.3g", 100 * fraction) + " %"; }
 
-std::string percent(double fraction) { return num("%.3g", 100 * fraction) + " %"; }
-
-std::string core_hours(double cpu_s) { return num("%.3g", cpu_s / 3600) + " core-hours"; }
+std::string core_hours(double cpu_s) { return format_number("%.3g", cpu_s / 3600) + " core-hours"; }
 
 // "best: Δ* 0.69, RDE 1.4 % (verdict pre-asymptotic), f0 = 1012.4".
 std::string best_figure(const AdaptiveFit& fit) {
   if (!fit.finest_delta_star || !fit.finest_rde) return "no extrapolation (" + std::to_string(fit.ng) + " converged grids)";
-  std::string out = "best: Δ* " + num("%.3g", *fit.finest_delta_star) + ", RDE " + percent(*fit.finest_rde) +
+  std::string out = "best: Δ* " + format_number("%.3g", *fit.finest_delta_star) + ", RDE " + percent(*fit.finest_rde) +
                     " (verdict " + (fit.verdict.empty() ? "none" : fit.verdict) + ")";
-  if (fit.f0) out += ", f0 = " + num("%.6g", *fit.f0);
+  if (fit.f0) out += ", f0 = " + format_number("%.6g", *fit.f0);
   return out;
 }
 
@@ -47,14 +43,14 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
   for (std::size_t k = started; k < ladder.size(); ++k) d.saved_cpu_s += scale * ladder[k].model_cpu_s;
   d.rungs_not_run = started < ladder.size() ? ladder.size() - started : 0;
   const std::string not_run = std::to_string(d.rungs_not_run) + " grid(s) down to Δ* " +
-                              num("%.3g", ladder.empty() ? 0.0 : ladder.back().delta_star) + " not run";
-  const std::string at = fit.finest_delta_star ? "Δ* " + num("%.3g", *fit.finest_delta_star) : "no converged grid";
+                              format_number("%.3g", ladder.empty() ? 0.0 : ladder.back().delta_star) + " not run";
+  const std::string at = fit.finest_delta_star ? "Δ* " + format_number("%.3g", *fit.finest_delta_star) : "no converged grid";
   // 1. target met
   const bool enough = fit.ng >= static_cast<int>(AdaptiveGrids::kFirstGrids);
   if (enough && fit.verdict == "converged" && fit.finest_rde && *fit.finest_rde <= a.target_rde) {
     d.kind = AdaptiveDecision::Kind::kTargetMet;
     d.message = "stopped at " + at + ": RDE " + percent(*fit.finest_rde) + " ≤ " + target + " (verdict converged";
-    if (fit.f0) d.message += ", f0 = " + num("%.6g", *fit.f0);
+    if (fit.f0) d.message += ", f0 = " + format_number("%.6g", *fit.f0);
     d.message += "); saved an estimated " + core_hours(d.saved_cpu_s) + " (" + not_run + ")";
     return d;
   }
@@ -71,7 +67,7 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
   if (started >= ladder.size()) {
     d.kind = AdaptiveDecision::Kind::kTargetNotReached;
     d.message = "target not reached: " + why + " at " + at + " and finest_delta_star " +
-                num("%.3g", a.finest_delta_star) + " reached; " + best_figure(fit);
+                format_number("%.3g", a.finest_delta_star) + " reached; " + best_figure(fit);
     return d;
   }
   // 3. caps on the next rung
@@ -82,11 +78,11 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
   if (mem_cap > 0 && next.memory_bytes > mem_cap)
     cap = "would need an estimated " + human_bytes(next.memory_bytes) + " > " + mem_name + " " + human_bytes(mem_cap);
   else if (a.max_cpu_s && scale * next.model_cpu_s > *a.max_cpu_s)
-    cap = "would need an estimated " + num("%.3g", scale * next.model_cpu_s) + " CPU s > max_cpu_s " +
-          num("%.3g", *a.max_cpu_s);
+    cap = "would need an estimated " + format_number("%.3g", scale * next.model_cpu_s) + " CPU s > max_cpu_s " +
+          format_number("%.3g", *a.max_cpu_s);
   if (!cap.empty()) {
     d.kind = AdaptiveDecision::Kind::kTargetNotReached;
-    d.message = "target not reached: " + why + " at " + at + "; the next grid Δ* " + num("%.3g", next.delta_star) +
+    d.message = "target not reached: " + why + " at " + at + "; the next grid Δ* " + format_number("%.3g", next.delta_star) +
                 " " + cap + "; " + best_figure(fit) + "; " + not_run + " (an estimated " + core_hours(d.saved_cpu_s) + ")";
     return d;
   }
@@ -95,9 +91,9 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
   d.next_rung = started;
   d.saved_cpu_s = 0;
   d.rungs_not_run = 0;
-  d.message = "refining: " + why + " at " + at + "; next grid Δ* " + num("%.3g", next.delta_star) + " (" +
+  d.message = "refining: " + why + " at " + at + "; next grid Δ* " + format_number("%.3g", next.delta_star) + " (" +
               std::to_string(next.cells[0]) + "x" + std::to_string(next.cells[1]) + "x" +
-              std::to_string(next.cells[2]) + ", an estimated " + num("%.3g", scale * next.model_cpu_s) + " CPU s)";
+              std::to_string(next.cells[2]) + ", an estimated " + format_number("%.3g", scale * next.model_cpu_s) + " CPU s)";
   return d;
 }
 

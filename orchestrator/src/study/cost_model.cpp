@@ -1,6 +1,8 @@
 // The cost ratio of a job (study/cost_model.h).
 #include "study/cost_model.h"
 
+#include "study/format_number.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,12 +12,6 @@
 
 namespace gridfree {
 namespace {
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 double number_at(const nlohmann::json& doc, const char* pointer) {
   const auto p = nlohmann::json::json_pointer(pointer);
@@ -52,9 +48,9 @@ CostRatio apriori_cost_ratio(const nlohmann::json& job_doc, const std::array<int
   const double w = re > 1 ? std::min(1.0, std::log(re) / std::log(kReferenceReP)) : 0.0;
   CostRatio r;
   r.ratio = 1 + (ref - 1) * w;
-  r.basis = "a-priori: Re_p " + fmt("%.3g", re) + (nested ? ", nested-start grid" : ", single grid") + ": × " +
-            fmt("%.3g", r.ratio) + " (1 at Re_p ≤ 1, the bubble; " + fmt("%g", ref) + " at Re_p ≥ " +
-            fmt("%g", kReferenceReP) + ", the SSCP-like bed)";
+  r.basis = "a-priori: Re_p " + format_number("%.3g", re) + (nested ? ", nested-start grid" : ", single grid") + ": × " +
+            format_number("%.3g", r.ratio) + " (1 at Re_p ≤ 1, the bubble; " + format_number("%g", ref) + " at Re_p ≥ " +
+            format_number("%g", kReferenceReP) + ", the SSCP-like bed)";
   return r;
 }
 
@@ -90,8 +86,8 @@ CostRatio history_cost_ratio(const std::vector<CostSample>& similar, double cell
     }
   r.ratio = median(ratios);
   r.jobs = ratios.size();
-  r.basis = "history: median of " + std::to_string(r.jobs) + " similar finished job(s) of " + fmt("%.0f", lo) +
-            (hi > lo ? "–" + fmt("%.0f", hi) : std::string()) + " cells: × " + fmt("%.3g", r.ratio);
+  r.basis = "history: median of " + std::to_string(r.jobs) + " similar finished job(s) of " + format_number("%.0f", lo) +
+            (hi > lo ? "–" + format_number("%.0f", hi) : std::string()) + " cells: × " + format_number("%.3g", r.ratio);
   return r;
 }
 

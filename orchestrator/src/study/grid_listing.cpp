@@ -1,6 +1,8 @@
 // grid_listing, neighbour_warnings and their text/JSON forms (grid_listing.h).
 #include "study/grid_listing.h"
 
+#include "study/format_number.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -26,12 +28,6 @@ std::vector<GridRow> grid_listing(const Study& study) {
   return rows;
 }
 
-static std::string fmt(const char* f, double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows, double min_ratio) {
   std::vector<std::string> out;
   for (std::size_t begin = 0; begin < rows.size();) {
@@ -43,9 +39,9 @@ std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows, do
     for (std::size_t i = 1; i < g.size(); ++i) {
       const double ratio = g[i]->actual / g[i - 1]->actual;
       if (ratio < min_ratio)
-        out.push_back("case " + g[i]->case_name + ": " + g[i - 1]->pointer + " (Δ* " + fmt("%.4g", g[i - 1]->actual) +
-                      ") and " + g[i]->pointer + " (Δ* " + fmt("%.4g", g[i]->actual) + ") differ by a ratio of " +
-                      fmt("%.3f", ratio) + " < " + fmt("%g", min_ratio) +
+        out.push_back("case " + g[i]->case_name + ": " + g[i - 1]->pointer + " (Δ* " + format_number("%.4g", g[i - 1]->actual) +
+                      ") and " + g[i]->pointer + " (Δ* " + format_number("%.4g", g[i]->actual) + ") differ by a ratio of " +
+                      format_number("%.3f", ratio) + " < " + format_number("%g", min_ratio) +
                       ": their difference is mostly grid-to-grid scatter, not the trend with Δ*");
     }
     begin = end;
@@ -61,7 +57,7 @@ std::string grid_listing_table(const std::vector<GridRow>& rows) {
                 "nx x ny x nz", "cells");
   out += line;
   for (const auto& r : rows) {
-    const std::string req = r.requested ? fmt("%.4g", *r.requested) : "-";
+    const std::string req = r.requested ? format_number("%.4g", *r.requested) : "-";
     const std::string dims =
         std::to_string(r.cells[0]) + " x " + std::to_string(r.cells[1]) + " x " + std::to_string(r.cells[2]);
     std::snprintf(line, sizeof line, "%-16s %5zu %12s %12.4g %18s %12llu\n", r.case_name.c_str(), r.index, req.c_str(),

@@ -1,6 +1,8 @@
 // plan --target-rde (study/target_plan.h).
 #include "study/target_plan.h"
 
+#include "study/format_number.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,13 +14,7 @@
 namespace gridfree {
 namespace {
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-std::string pct(double fraction) { return fmt("%.3g", 100 * fraction) + " %"; }
+std::string pct(double fraction) { return format_number("%.3g", 100 * fraction) + " %"; }
 
 }  // namespace
 
@@ -100,13 +96,13 @@ TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model,
 }
 
 std::string rde_model_text(const RdeModel& m) {
-  std::string out = "RDE(Δ*) = " + pct(m.a) + " · Δ*^" + fmt("%.3g", m.p);
+  std::string out = "RDE(Δ*) = " + pct(m.a) + " · Δ*^" + format_number("%.3g", m.p);
   if (m.a_priori)
     return out + " — a-priori: no finished similar series in the database; p = 1 and the coefficient "
                  "assumed from the bursting-bubble baseline (RDE 0.78 % at Δ* 0.564, docs/BENCHMARKS.md); "
                  "costs from the a-priori cost model (study/cost_model.h)";
   return out + " — fitted to " + std::to_string(m.points) + " (Δ*, RDE) of " + std::to_string(m.similar_series) +
-         " finished similar series; costs from the a-priori cost model × " + fmt("%.3g", m.cost_scale) +
+         " finished similar series; costs from the a-priori cost model × " + format_number("%.3g", m.cost_scale) +
          " (their measured CPU time / the a-priori model's)";
 }
 
@@ -163,16 +159,16 @@ std::string target_plan_text(const TargetPlan& p) {
       out += line;
     }
     if (c.reachable)
-      out += "  needs " + std::to_string(c.grids_needed) + " grids (Δ* " + fmt("%.4g", c.grids.front().delta_star) +
-             " → " + fmt("%.4g", c.grids[c.grids_needed - 1].delta_star) + "): " +
-             fmt("%.3g", c.cpu_s_per_series / 3600) + " core-hours per series, peak memory " +
+      out += "  needs " + std::to_string(c.grids_needed) + " grids (Δ* " + format_number("%.4g", c.grids.front().delta_star) +
+             " → " + format_number("%.4g", c.grids[c.grids_needed - 1].delta_star) + "): " +
+             format_number("%.3g", c.cpu_s_per_series / 3600) + " core-hours per series, peak memory " +
              human_bytes(c.peak_memory_bytes) + "\n";
     else
       out += "  target not reachable on these grids: the finest predicts RDE " +
              pct(c.grids.empty() ? 0.0 : c.grids.back().predicted_rde) + "; all " + std::to_string(c.grids_needed) +
-             " grids cost " + fmt("%.3g", c.cpu_s_per_series / 3600) + " core-hours per series\n";
+             " grids cost " + format_number("%.3g", c.cpu_s_per_series / 3600) + " core-hours per series\n";
   }
-  out += "\ntotal: " + fmt("%.3g", p.total_cpu_s / 3600) + " core-hours, peak memory " +
+  out += "\ntotal: " + format_number("%.3g", p.total_cpu_s / 3600) + " core-hours, peak memory " +
          human_bytes(p.peak_memory_bytes) + "\n";
   return out;
 }

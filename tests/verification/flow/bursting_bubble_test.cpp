@@ -19,34 +19,12 @@
 #include "drag/drag_law.h"
 #include "flow/solve.h"
 #include "particles/particle_io.h"
+#include "bubble_baseline_job.h"
 
 namespace gridfree {
 namespace {
 
-JobSpec baseline(double delta_star) {
-  JobSpec job;
-  CaseSpec& c = job.case_spec;
-  c.name = "PC1";
-  c.domain_dp = {30, 200, 10};
-  c.particle_diameter_cm = 0.01;
-  c.gas = {1e-3, 2e-4};
-  c.boundaries[0] = {BoundarySpec{BoundaryKind::kPeriodic}, BoundarySpec{BoundaryKind::kPeriodic}};
-  c.boundaries[2] = c.boundaries[0];
-  c.boundaries[1][0] = {BoundaryKind::kMassInflow, 20, 0};
-  c.boundaries[1][1] = {BoundaryKind::kPressureOutflow, 0, 0};
-  GeneratorSpec gen;
-  gen.kind = "bursting_bubble";
-  gen.params = {{"kind", "bursting_bubble"}, {"seed", 1}};
-  c.particles = gen;
-  c.probes = {4, 104};
-  job.numerics.cells = cells_for_delta_star(c.domain_dp, delta_star);
-  job.numerics.convection = Limiter::kSuperbee;
-  job.numerics.drag = DragLaw::kBvk;
-  job.numerics.deposition = DepositionSpec{};  // the default transfer, fwhm 6 (docs/TRANSFER.md)
-  job.numerics.tolerances.steady = 1e-5;
-  job.numerics.max_iterations = 2000;
-  return job;
-}
+JobSpec baseline(double delta_star) { return test_support::bubble_baseline_job(delta_star); }
 
 double series_estimate(const JobSpec& job, const ParticleSet& set) {
   const CaseSpec& c = job.case_spec;

@@ -14,30 +14,13 @@
 
 #include "flow/solve.h"
 #include "particles/particle_io.h"
+#include "bubble_baseline_job.h"
 
 namespace gridfree {
 namespace {
 
 JobSpec baseline(double steady) {
-  JobSpec job;
-  CaseSpec& c = job.case_spec;
-  c.name = "PC1";
-  c.domain_dp = {30, 200, 10};
-  c.particle_diameter_cm = 0.01;
-  c.gas = {1e-3, 2e-4};
-  c.boundaries[0] = {BoundarySpec{BoundaryKind::kPeriodic}, BoundarySpec{BoundaryKind::kPeriodic}};
-  c.boundaries[2] = c.boundaries[0];
-  c.boundaries[1][0] = {BoundaryKind::kMassInflow, 20, 0};
-  c.boundaries[1][1] = {BoundaryKind::kPressureOutflow, 0, 0};
-  GeneratorSpec gen;
-  gen.kind = "bursting_bubble";
-  gen.params = {{"kind", "bursting_bubble"}, {"seed", 1}};
-  c.particles = gen;
-  c.probes = {4, 104};
-  job.numerics.cells = cells_for_delta_star(c.domain_dp, 2.0);
-  job.numerics.convection = Limiter::kSuperbee;
-  job.numerics.drag = DragLaw::kBvk;
-  job.numerics.deposition = DepositionSpec{};
+  JobSpec job = test_support::bubble_baseline_job(2.0);
   job.numerics.tolerances.steady = steady;
   job.numerics.max_iterations = 5000;
   return job;

@@ -6,23 +6,16 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "flow/anderson.h"
 #include "flow/newton_krylov.h"
 #include "flow/parallel.h"
 #include "flow/residuals.h"
+#include "flow/outer_status.h"
 #include "flow/simplec_sweep.h"
 
 namespace gridfree {
 namespace {
-
-std::string format_number(double x) {
-  std::ostringstream s;
-  s.precision(3);
-  s << x;
-  return s.str();
-}
 
 void unpack(const std::vector<double>& x, FaceVector& u, std::vector<double>& p) {
   std::size_t off = 0;
@@ -120,14 +113,10 @@ SimpleOutcome run_newton_krylov(const FlowProblem& problem, const SimpleSettings
     if (on_iteration) on_iteration(report);
 
     // 3. Status.
-    const bool bad = !std::isfinite(report.continuity) || !std::isfinite(report.momentum) ||
-                     (report.qoi && !std::isfinite(*report.qoi));
-    if (bad || report.continuity > settings.blowup * first_continuity ||
-        report.momentum > settings.blowup * first_momentum) {
+    if (outer_diverged(report, settings.blowup, first_continuity, first_momentum)) {
       out.status = SolveStatus::kDiverged;
-      out.reason = "diverged after " + std::to_string(evaluations) +
-                   " SIMPLEC sweeps (Newton-Krylov): continuity residual " + format_number(report.continuity) +
-                   ", momentum residual " + format_number(report.momentum);
+      out.reason = "diverged after " + std::to_string(evaluations) + " SIMPLEC sweeps (Newton-Krylov): " +
+                   residuals_text(report.continuity, report.momentum);
       out.qoi.reset();
       return out;
     }
@@ -151,11 +140,8 @@ SimpleOutcome run_newton_krylov(const FlowProblem& problem, const SimpleSettings
     if (!rep.newton) ++out.newton_fallbacks;
   }
   out.status = SolveStatus::kNotConverged;
-  out.reason = "not converged after " + std::to_string(evaluations) +
-               " SIMPLEC sweeps (Newton-Krylov): continuity residual " + format_number(out.continuity) +
-               ", momentum residual " + format_number(out.momentum) +
-               ", relative change of the quantity of interest " + format_number(out.qoi_change) +
-               " (tolerance " + format_number(settings.steady_tolerance) + ")";
+  out.reason =
+      not_converged_reason(std::to_string(evaluations) + " SIMPLEC sweeps (Newton-Krylov)", out, settings.steady_tolerance);
   return out;
 }
 

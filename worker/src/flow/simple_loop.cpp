@@ -6,24 +6,15 @@
 #include <cmath>
 #include <deque>
 #include <memory>
-#include <sstream>
 
 #include "flow/anderson.h"
 #include "flow/iterative_error.h"
+#include "flow/outer_status.h"
 #include "flow/residuals.h"
 #include "flow/simplec_sweep.h"
 
 namespace gridfree {
 namespace {
-
-bool finite(double x) { return std::isfinite(x); }
-
-std::string format_number(double x) {
-  std::ostringstream s;
-  s.precision(3);
-  s << x;
-  return s.str();
-}
 
 // Adds the seconds since the last call (or construction) to a total.
 class PhaseClock {
@@ -109,13 +100,10 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     if (qoi) out.qoi_iterative_error = geometric_iterative_error(qoi_history, settings.qoi_window);
     if (on_iteration) on_iteration(report);
 
-    const bool bad = !finite(report.continuity) || !finite(report.momentum) ||
-                     (report.qoi && !finite(*report.qoi));
-    if (bad || report.continuity > settings.blowup * first_continuity ||
-        report.momentum > settings.blowup * first_momentum) {
+    if (outer_diverged(report, settings.blowup, first_continuity, first_momentum)) {
       out.status = SolveStatus::kDiverged;
-      out.reason = "diverged at iteration " + std::to_string(it) + ": continuity residual " +
-                   format_number(report.continuity) + ", momentum residual " + format_number(report.momentum);
+      out.reason = "diverged at iteration " + std::to_string(it) + ": " +
+                   residuals_text(report.continuity, report.momentum);
       out.qoi.reset();
       return out;
     }
@@ -136,11 +124,8 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     }
   }
   out.status = SolveStatus::kNotConverged;
-  out.reason = "not converged after " + std::to_string(settings.max_iterations) +
-               " iterations: continuity residual " + format_number(out.continuity) +
-               ", momentum residual " + format_number(out.momentum) +
-               ", relative change of the quantity of interest " + format_number(out.qoi_change) +
-               " (tolerance " + format_number(settings.steady_tolerance) + ")";
+  out.reason = not_converged_reason(std::to_string(settings.max_iterations) + " iterations", out,
+                                    settings.steady_tolerance);
   return out;
 }
 

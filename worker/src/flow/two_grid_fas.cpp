@@ -6,22 +6,15 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "flow/flow_residuals.h"
 #include "flow/prolong.h"
 #include "flow/residuals.h"
+#include "flow/outer_status.h"
 #include "flow/simplec_sweep.h"
 
 namespace gridfree {
 namespace {
-
-std::string format_number(double x) {
-  std::ostringstream s;
-  s.precision(3);
-  s << x;
-  return s.str();
-}
 
 // I(r_h / V_h) − r_H / V_H on the coarse lattice.
 std::vector<double> tau_source(const std::vector<double>& restricted_density, const std::vector<double>& coarse_residual,
@@ -87,13 +80,10 @@ FasOutcome run_two_grid_fas(const FasLevel& fine, FasLevel& coarse, const Simple
     out.qoi = report.qoi;
     out.qoi_change = report.qoi_change;
     if (on_iteration) on_iteration(report);
-    const bool bad = !std::isfinite(report.continuity) || !std::isfinite(report.momentum) ||
-                     (report.qoi && !std::isfinite(*report.qoi));
-    if (bad || report.continuity > settings.blowup * first_continuity ||
-        report.momentum > settings.blowup * first_momentum) {
+    if (outer_diverged(report, settings.blowup, first_continuity, first_momentum)) {
       out.status = SolveStatus::kDiverged;
-      out.reason = "diverged after " + std::to_string(out.iterations) + " fine sweeps (two-grid FAS): continuity residual " +
-                   format_number(report.continuity) + ", momentum residual " + format_number(report.momentum);
+      out.reason = "diverged after " + std::to_string(out.iterations) + " fine sweeps (two-grid FAS): " +
+                   residuals_text(report.continuity, report.momentum);
       out.qoi.reset();
       return fas;
     }
@@ -150,11 +140,8 @@ FasOutcome run_two_grid_fas(const FasLevel& fine, FasLevel& coarse, const Simple
     ++fas.cycles;
   }
   out.status = SolveStatus::kNotConverged;
-  out.reason = "not converged after " + std::to_string(out.iterations) +
-               " fine sweeps (two-grid FAS): continuity residual " + format_number(out.continuity) +
-               ", momentum residual " + format_number(out.momentum) +
-               ", relative change of the quantity of interest " + format_number(out.qoi_change) +
-               " (tolerance " + format_number(settings.steady_tolerance) + ")";
+  out.reason =
+      not_converged_reason(std::to_string(out.iterations) + " fine sweeps (two-grid FAS)", out, settings.steady_tolerance);
   return fas;
 }
 

@@ -1,0 +1,31 @@
+// The outer loops' divergence test and reasons (outer_status.h).
+#include "flow/outer_status.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace gridfree {
+
+std::string residual_text(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+bool outer_diverged(const IterationReport& r, double blowup, double first_continuity, double first_momentum) {
+  const bool bad = !std::isfinite(r.continuity) || !std::isfinite(r.momentum) || (r.qoi && !std::isfinite(*r.qoi));
+  return bad || r.continuity > blowup * first_continuity || r.momentum > blowup * first_momentum;
+}
+
+std::string residuals_text(double continuity, double momentum) {
+  return "continuity residual " + residual_text(continuity) + ", momentum residual " + residual_text(momentum);
+}
+
+std::string not_converged_reason(const std::string& count, const SimpleOutcome& out, double tolerance) {
+  return "not converged after " + count + ": " + residuals_text(out.continuity, out.momentum) +
+         ", relative change of the quantity of interest " + residual_text(out.qoi_change) + " (tolerance " +
+         residual_text(tolerance) + ")";
+}
+
+}  // namespace gridfree
