@@ -89,27 +89,13 @@ SimpleOutcome run_newton_krylov(const FlowProblem& problem, const SimpleSettings
     // 2. Base evaluation: the monitor, and the inner counts to replay.
     const SweepReport base = evaluate(x, fx, nullptr);
     counts = base.counts;
-    IterationReport report;
-    report.iteration = evaluations;
-    report.continuity = base.continuity;
-    report.momentum = base.momentum;
-    report.momentum_iterations = base.momentum_iterations;
-    report.pressure_iterations = base.pressure_iterations;
-    report.qoi_change = 1.0;
-    if (qoi) {
-      report.qoi = qoi(state);
-      if (previous_qoi) report.qoi_change = normalized(std::abs(*report.qoi - *previous_qoi), std::abs(*report.qoi));
-      previous_qoi = report.qoi;
-    }
+    IterationReport report = sweep_report(evaluations, base);
+    monitor_qoi_step(qoi, state, previous_qoi, report);
     if (step == 1) {  // blow-up reference (at least 1e-2)
       first_continuity = std::max(report.continuity, 1e-2);
       first_momentum = std::max(report.momentum, 1e-2);
     }
-    out.iterations = evaluations;
-    out.continuity = report.continuity;
-    out.momentum = report.momentum;
-    out.qoi = report.qoi;
-    out.qoi_change = report.qoi_change;
+    record_iteration(report, evaluations, out);
     if (on_iteration) on_iteration(report);
 
     // 3. Status.

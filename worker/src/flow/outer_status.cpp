@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "flow/residuals.h"
+
 namespace gridfree {
 
 std::string residual_text(double x) {
@@ -11,6 +13,33 @@ std::string residual_text(double x) {
   s.precision(3);
   s << x;
   return s.str();
+}
+
+IterationReport sweep_report(int iteration, const SweepReport& sweep) {
+  IterationReport r;
+  r.iteration = iteration;
+  r.continuity = sweep.continuity;
+  r.momentum = sweep.momentum;
+  r.momentum_iterations = sweep.momentum_iterations;
+  r.pressure_iterations = sweep.pressure_iterations;
+  return r;
+}
+
+void monitor_qoi_step(const QuantityOfInterest& qoi, const FlowState& state, std::optional<double>& previous,
+                      IterationReport& r) {
+  r.qoi_change = 1.0;
+  if (!qoi) return;
+  r.qoi = qoi(state);
+  if (previous) r.qoi_change = normalized(std::abs(*r.qoi - *previous), std::abs(*r.qoi));
+  previous = r.qoi;
+}
+
+void record_iteration(const IterationReport& r, int iterations, SimpleOutcome& out) {
+  out.iterations = iterations;
+  out.continuity = r.continuity;
+  out.momentum = r.momentum;
+  out.qoi = r.qoi;
+  out.qoi_change = r.qoi_change;
 }
 
 bool outer_diverged(const IterationReport& r, double blowup, double first_continuity, double first_momentum) {

@@ -3,11 +3,26 @@
 // divergence test and the words of its not_converged / diverged reasons.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "flow/simple_loop.h"
+#include "flow/simplec_sweep.h"
 
 namespace gridfree {
+
+// The monitor line of iteration `iteration` that ended in `sweep`: its
+// residuals and inner iteration counts (qoi and qoi_change left to the loop).
+IterationReport sweep_report(int iteration, const SweepReport& sweep);
+
+// The quantity of interest of `state` into `r`, with its change relative to
+// `previous` (1 when there is none), and `previous` updated: the monitor of
+// the prototypes, which compare consecutive iterates.
+void monitor_qoi_step(const QuantityOfInterest& qoi, const FlowState& state, std::optional<double>& previous,
+                      IterationReport& r);
+
+// The outcome's copy of the latest monitor line, after `iterations`.
+void record_iteration(const IterationReport& r, int iterations, SimpleOutcome& out);
 
 // A residual or change as the reasons print it (3 significant digits).
 std::string residual_text(double x);

@@ -57,9 +57,6 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
   }
 
   for (int it = first_iteration; it <= settings.max_iterations; ++it) {
-    IterationReport report;
-    report.iteration = it;
-
     PhaseClock clock;
     // 1. Drag from the current velocity field.
     const bool drag_fresh = !drag || (it - 1) % std::max(1, settings.drag_interval) == 0;
@@ -69,14 +66,11 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     if (mixer) AndersonMixer::pack(state.u, state.p, x_entering);
     // 2–3. Momentum predictor and pressure correction (simplec_sweep.h).
     const SweepReport sweep = simplec_sweep(problem, settings, state, *ws, &out.seconds);
-    report.momentum_iterations = sweep.momentum_iterations;
-    report.pressure_iterations = sweep.pressure_iterations;
     if (sweep.linear_failures) out.linear_failures = true;
     if (mixer) mixer->mix(x_entering, state.u, state.p);
 
     // 4. Monitor: residuals, quantity of interest, status.
-    report.continuity = sweep.continuity;
-    report.momentum = sweep.momentum;
+    IterationReport report = sweep_report(it, sweep);
     if (qoi) {
       report.qoi = qoi(state);
       qoi_history.push_back(*report.qoi);
@@ -92,11 +86,7 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
       first_continuity = std::max({first_continuity, report.continuity, 1e-2});
       first_momentum = std::max({first_momentum, report.momentum, 1e-2});
     }
-    out.iterations = it;
-    out.continuity = report.continuity;
-    out.momentum = report.momentum;
-    out.qoi = report.qoi;
-    out.qoi_change = report.qoi_change;
+    record_iteration(report, it, out);
     if (qoi) out.qoi_iterative_error = geometric_iterative_error(qoi_history, settings.qoi_window);
     if (on_iteration) on_iteration(report);
 

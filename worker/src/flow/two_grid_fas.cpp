@@ -59,26 +59,13 @@ FasOutcome run_two_grid_fas(const FasLevel& fine, FasLevel& coarse, const Simple
       if (sweep.linear_failures) out.linear_failures = true;
       ++out.iterations;
     }
-    IterationReport report;
-    report.iteration = out.iterations;
-    report.continuity = sweep.continuity;
-    report.momentum = sweep.momentum;
-    report.momentum_iterations = sweep.momentum_iterations;
-    report.pressure_iterations = sweep.pressure_iterations;
-    report.qoi_change = 1.0;
-    if (qoi) {
-      report.qoi = qoi(sh);
-      if (previous_qoi) report.qoi_change = normalized(std::abs(*report.qoi - *previous_qoi), std::abs(*report.qoi));
-      previous_qoi = report.qoi;
-    }
+    IterationReport report = sweep_report(out.iterations, sweep);
+    monitor_qoi_step(qoi, sh, previous_qoi, report);
     if (cycle == 1) {
       first_continuity = std::max(report.continuity, 1e-2);
       first_momentum = std::max(report.momentum, 1e-2);
     }
-    out.continuity = report.continuity;
-    out.momentum = report.momentum;
-    out.qoi = report.qoi;
-    out.qoi_change = report.qoi_change;
+    record_iteration(report, out.iterations, out);
     if (on_iteration) on_iteration(report);
     if (outer_diverged(report, settings.blowup, first_continuity, first_momentum)) {
       out.status = SolveStatus::kDiverged;
