@@ -5,18 +5,20 @@
 # bytes per cell, cost per cell (µs of wall time per cell), cells·iterations
 # per second and where the time went (drag + filter, momentum, pressure).
 #
-#   bench/run.sh BIN_DIR [--quick] [--finest] [--only bubble|sscp] [--threads N] [--csv FILE]
+#   bench/run.sh BIN_DIR [--quick] [--finest] [--only bubble|sscp] [--threads N] [--seed S] [--csv FILE]
 #
 # BIN_DIR holds gridfree-worker (e.g. build/bin). --quick skips Δ* = 0.25
 # (3.84 M cells); --finest adds Δ* = 0.16 (187 × 1250 × 62 = 14.5 M cells,
 # several GB: only on an otherwise idle machine). --csv also writes the rows
-# to FILE. Jobs and results go to a temporary folder. Print `uptime` with
+# to FILE. --seed S (default 1) generates another particle configuration
+# of both beds: the held-out check of figures measured on seed 1. Jobs and
+# results go to a temporary folder. Print `uptime` with
 # the figures: timings on a shared machine are noisy. `iter` and cell_it/s
 # count the fine grid's outer iterations; `nested` is the wall time of the
 # coarser grids of the nested start (docs/SOLVER.md), included in wall_s.
 set -euo pipefail
 if [[ $# -lt 1 ]]; then
-  echo "usage: $0 BIN_DIR [--quick] [--finest] [--only bubble|sscp] [--threads N] [--csv FILE]" >&2
+  echo "usage: $0 BIN_DIR [--quick] [--finest] [--only bubble|sscp] [--threads N] [--seed S] [--csv FILE]" >&2
   exit 2
 fi
 bin="$1"; shift
@@ -24,6 +26,7 @@ quick=0
 finest=0
 only=""
 threads=""
+seed=1
 csv=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -32,6 +35,8 @@ while [[ $# -gt 0 ]]; do
     --fine) ;;  # the default; kept for older command lines
     --only) only="$2"; shift ;;
     --threads) threads="--threads $2"; shift ;;
+    --seed) seed="$2"; shift
+            [[ "$seed" =~ ^[0-9]+$ ]] || { echo "--seed: expected a non-negative integer, got '$seed'" >&2; exit 2; } ;;
     --csv) csv="$2"; shift ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
@@ -61,7 +66,7 @@ bubble_case() {
     "boundaries": {"x": "periodic", "z": "periodic",
       "y_low": {"type": "mass_inflow", "superficial_velocity_cm_s": 20.0},
       "y_high": {"type": "pressure_outflow", "pressure_dyn_cm2": 0.0}},
-    "particles": {"generator": {"kind": "bursting_bubble", "seed": 1}},
+    "particles": {"generator": {"kind": "bursting_bubble", "seed": $seed}},
     "probes": {"pressure_drop": {"y1_dp": 4, "y2_dp": 104}}
 JSON
 }
@@ -73,7 +78,7 @@ sscp_case() {
     "boundaries": {"x": "wall", "z": "wall",
       "y_low": {"type": "mass_inflow", "superficial_velocity_cm_s": 219.0},
       "y_high": {"type": "pressure_outflow", "pressure_dyn_cm2": 0.0}},
-    "particles": {"generator": {"kind": "sscp_like", "seed": 1, "bed_height_dp": 51,
+    "particles": {"generator": {"kind": "sscp_like", "seed": $seed, "bed_height_dp": 51,
       "solids_fraction": 0.58, "bubbles": 3, "bubble_radius_dp": 4}},
     "probes": {"pressure_drop": {"y1_dp": 4, "y2_dp": 44}}
 JSON
@@ -81,7 +86,7 @@ JSON
 
 header="case,cells,delta_star,status,iterations,wall_s,cpu_s,peak_rss_mb,bytes_per_cell,us_per_cell,cell_iterations_per_s,drag_s,momentum_s,pressure_s,nested_s,dp_star"
 [[ -n "$csv" ]] && echo "$header" >"$csv"
-echo "machine: $(nproc) cores, $(uname -m), $(date -u +%Y-%m-%dT%H:%MZ); load:$(uptime | sed 's/.*load average://')"
+echo "machine: $(nproc) cores, $(uname -m), $(date -u +%Y-%m-%dT%H:%MZ); load:$(uptime | sed 's/.*load average://'); particle seed $seed"
 printf '%-9s %-13s %6s %10s %5s %8s %8s %8s %6s %8s %10s %6s %6s %6s %6s %13s\n' case cells dstar status iter wall_s cpu_s rss_mb B/cell us/cell cell_it/s drag mom pres nested dp_star
 for r in "${runs[@]}"; do
   read -r name nx ny nz <<<"$r"

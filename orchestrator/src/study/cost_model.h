@@ -42,7 +42,7 @@ namespace gridfree {
 
 // A-priori ratios (docs/ORCHESTRATOR.md "Cost model", measured 2026-11-29):
 // the medians over the 83 converged jobs of the SSCP-like six-instance study
-// (35 below kNestedMinCells, 48 above).
+// (35 below 20 000 cells, 48 above: the nested-start threshold of solver/4).
 inline constexpr double kReferenceReP = 475.0;
 inline constexpr double kReferenceSingleGridRatio = 1.45;
 inline constexpr double kReferenceNestedRatio = 2.6;

@@ -30,10 +30,12 @@ namespace gridfree {
 // 2026-11-23; 1.7–1.8 µs of CPU per cell and iteration). Larger grids start
 // from the solution on a grid with half the cells per axis (docs/SOLVER.md):
 // the CPU time of the whole nested solve was 35 (60 k) and 30 (480 k)
-// fine-grid iterations' worth, so kNestedIterations is used for them.
+// fine-grid iterations' worth (solver/4), and 20–23 at 8 k–60 k (solver/5),
+// so kNestedIterations is used for them (an over-estimate now, on the
+// safe side of the default timeout).
 inline constexpr double kBaseIterations = 20.0;
 inline constexpr double kIterationsPerCellRoot = 2.65;
-inline constexpr double kNestedMinCells = 20000;           // the worker's nested-start threshold
+inline constexpr double kNestedMinCells = 5000;            // the worker's nested-start threshold
 inline constexpr double kNestedIterations = 35.0;
 inline constexpr double kSecondsPerCellIteration = 1.8e-6;  // one core
 

@@ -75,6 +75,7 @@ TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model,
       const CostRatio r = job_cost_ratio(history, doc, g.cells);
       const bool measured = r.source == CostSource::kHistory;
       g.cpu_s = (measured ? r.ratio : model.cost_scale * r.ratio) * estimated_seconds(g.cells, 1);
+      g.cost_from_history = measured;
       cp.costs_from_history = cp.costs_from_history || measured;
       g.memory_bytes = estimated_memory_bytes(g.cells);
       if (first_met == ds.size() && g.predicted_rde <= target) first_met = k;
@@ -99,11 +100,28 @@ std::string rde_model_text(const RdeModel& m) {
   std::string out = "RDE(Δ*) = " + pct(m.a) + " · Δ*^" + format_number("%.3g", m.p);
   if (m.a_priori)
     return out + " — a-priori: no finished similar series in the database; p = 1 and the coefficient "
-                 "assumed from the bursting-bubble baseline (RDE 0.78 % at Δ* 0.564, docs/BENCHMARKS.md); "
-                 "costs from the a-priori cost model (study/cost_model.h)";
+                 "assumed from the bursting-bubble baseline (RDE 0.78 % at Δ* 0.564, docs/BENCHMARKS.md)";
   return out + " — fitted to " + std::to_string(m.points) + " (Δ*, RDE) of " + std::to_string(m.similar_series) +
-         " finished similar series; costs from the a-priori cost model × " + format_number("%.3g", m.cost_scale) +
-         " (their measured CPU time / the a-priori model's)";
+         " finished similar series";
+}
+
+std::string cost_basis_text(const TargetPlan& p) {
+  std::size_t grids = 0, measured = 0;
+  for (const auto& c : p.cases)
+    for (const auto& g : c.grids) {
+      grids += 1;
+      measured += g.cost_from_history ? 1 : 0;
+    }
+  const std::string model =
+      p.model.cost_scale == 1
+          ? std::string("the a-priori cost model (study/cost_model.h)")
+          : "the a-priori cost model × " + format_number("%.3g", p.model.cost_scale) +
+                " (the similar series' measured CPU time / the model's)";
+  const std::string history = "finished similar jobs in the database (the plan's cost ratio, study/cost_model.h)";
+  if (measured == 0) return "costs from " + model;
+  if (measured == grids) return "costs of every grid from " + history;
+  return "costs of " + std::to_string(measured) + " of " + std::to_string(grids) + " grids from " + history +
+         ", the others from " + model;
 }
 
 nlohmann::json target_plan_json(const TargetPlan& p) {
@@ -115,6 +133,7 @@ nlohmann::json target_plan_json(const TargetPlan& p) {
                        {"cells", {g.cells[0], g.cells[1], g.cells[2]}},
                        {"predicted_rde", g.predicted_rde},
                        {"cpu_core_hours", g.cpu_s / 3600},
+                       {"cost_source", g.cost_from_history ? "history" : "a_priori"},
                        {"memory_bytes", g.memory_bytes},
                        {"needed", g.needed}});
     cases.push_back({{"case", c.case_name},
@@ -136,17 +155,22 @@ nlohmann::json target_plan_json(const TargetPlan& p) {
             {"similar_series", p.model.similar_series},
             {"cost_scale", p.model.cost_scale},
             {"basis", rde_model_text(p.model)}}},
+          {"cost_basis", cost_basis_text(p)},
           {"cases", cases},
           {"total_core_hours", p.total_cpu_s / 3600},
           {"peak_memory_bytes", p.peak_memory_bytes}};
 }
 
 std::string target_plan_text(const TargetPlan& p) {
-  std::string out = "target RDE " + pct(p.target_rde) + ": " + rde_model_text(p.model) + "\n";
+  std::string out = "target RDE " + pct(p.target_rde) + ": " + rde_model_text(p.model) + "\n" + cost_basis_text(p) + "\n";
   char line[256];
   for (const auto& c : p.cases) {
+    const auto measured = std::count_if(c.grids.begin(), c.grids.end(), [](const TargetGrid& g) { return g.cost_from_history; });
     out += "\ncase " + c.case_name + " (" + std::to_string(c.series) + " series)" +
-           (c.costs_from_history ? "; costs from its finished similar jobs (the plan's cost ratio)" : "") + ":\n";
+           (measured > 0 ? "; costs of " + std::to_string(measured) + " of " + std::to_string(c.grids.size()) +
+                               " grids from its finished similar jobs"
+                         : std::string()) +
+           ":\n";
     std::snprintf(line, sizeof line, "  %-8s %-16s %14s %14s %12s  %s\n", "Δ*", "cells", "predicted RDE", "core-hours",
                   "memory", "needed");
     out += line;

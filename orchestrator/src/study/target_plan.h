@@ -56,6 +56,7 @@ struct TargetGrid {
   std::array<int, 3> cells{};
   double predicted_rde = 0;
   double cpu_s = 0;                         // scaled cost-model estimate
+  bool cost_from_history = false;           // cpu_s from finished similar jobs (else cost_scale × a-priori)
   double memory_bytes = 0;
   bool needed = false;
 };
@@ -88,7 +89,8 @@ std::vector<std::pair<double, std::array<int, 3>>> candidate_grids(const Study& 
 // history rule (study/cost_model.h) instead of cost_scale × the a-priori model.
 TargetPlan plan_for_target(const Study& study, double target_rde, const RdeModel& model,
                            const CostHistory& history = {});
-std::string rde_model_text(const RdeModel& model);  // the model and what it rests on
+std::string rde_model_text(const RdeModel& model);  // the RDE model and what it rests on
+std::string cost_basis_text(const TargetPlan& plan); // where the grids' costs come from
 nlohmann::json target_plan_json(const TargetPlan& plan);
 std::string target_plan_text(const TargetPlan& plan);
 

@@ -217,6 +217,7 @@ TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto plan = nlohmann::json::parse(r.out)["target"];
   EXPECT_TRUE(plan["model"]["a_priori"].get<bool>());
+  EXPECT_EQ(plan["cost_basis"], "costs from the a-priori cost model (study/cost_model.h)");
   EXPECT_EQ(nlohmann::json::parse(r.out)["series"][0]["cost_source"], "a-priori");  // docs/ORCHESTRATOR.md "Cost model"
   std::ofstream(dir / "garbage.sqlite") << "not a database";  // refused, named, left as it was
   const auto bad = gridfree_in(dir, "plan fixed.json --db garbage.sqlite");
@@ -233,6 +234,11 @@ TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   plan = nlohmann::json::parse(r.out)["target"];
   EXPECT_FALSE(plan["model"]["a_priori"].get<bool>());
+  // Every grid of the ladder ran: every grid is priced by its history, and
+  // the header says so instead of naming the a-priori model.
+  EXPECT_EQ(plan["cost_basis"].get<std::string>().rfind("costs of every grid from finished similar jobs", 0), 0u)
+      << plan["cost_basis"];
+  EXPECT_EQ(plan["cases"][0]["grids"][0]["cost_source"], "history");
   // The study's own finished jobs calibrate its time estimate: each grid's
   // ratio is the median of measured CPU / base model over the finished jobs
   // nearest in cell count, so it lies within their ratios' range.

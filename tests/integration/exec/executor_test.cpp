@@ -122,7 +122,11 @@ TEST(LocalExecutor, ShutdownLetsWorkersCheckpoint) {
   LocalExecutor ex(kFake, 5);
   ex.start(launch(root, 1, "checkpoint"));
   ex.start(launch(root, 2, "stubborn"));
-  usleep(300000);  // let the shells install their traps
+  // Only once both shells have installed their traps (a loaded machine may
+  // take its time starting them).
+  for (int k = 0; k < 400 && !(fs::exists(root / "hash1/.trap_ready") && fs::exists(root / "hash2/.trap_ready")); ++k)
+    usleep(25000);
+  ASSERT_TRUE(fs::exists(root / "hash1/.trap_ready") && fs::exists(root / "hash2/.trap_ready"));
   const auto ids = ex.kill_all();
   EXPECT_EQ(ids.size(), 2u);
   EXPECT_TRUE(fs::exists(checkpoint_file(root / "hash1")));

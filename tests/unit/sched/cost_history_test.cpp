@@ -77,14 +77,14 @@ TEST(CostHistory, PlanUsesFinishedSimilarJobsAndFallsBackToAPriori) {
   EXPECT_NE(plan_to_table(plan).find("history x 1.5"), std::string::npos) << plan_to_table(plan);
 
   // A drag law the database has not seen: a-priori (Re_p 475; the grids of
-  // 6 000 to 34 506 cells straddle the nested-start threshold).
+  // 6 000 to 34 506 cells are all nested-start grids).
   auto doc = study.definition;
   doc["factors"]["drag"] = {"hkl"};
   const Study hkl = parse_study_document(doc, kSource + "/studies");
   const Plan a = make_plan(hkl, expand(hkl), 1, 1, history);
   for (const auto& row : a.rows) {
     EXPECT_EQ(row.cost_source, CostSource::kAPriori) << row.series;
-    EXPECT_DOUBLE_EQ(row.cost_ratio_min, kReferenceSingleGridRatio) << row.series;
+    EXPECT_DOUBLE_EQ(row.cost_ratio_min, kReferenceNestedRatio) << row.series;
     EXPECT_DOUBLE_EQ(row.cost_ratio_max, kReferenceNestedRatio) << row.series;
   }
   // The bursting bubble from the same database: a-priori, ratio 1 (the base model).

@@ -46,7 +46,7 @@ TEST(CostModel, ParticleReynoldsNumberOfBothCases) {
 }
 
 TEST(CostModel, APrioriRatioFollowsReynoldsNumberAndNestedStart) {
-  const std::array<int, 3> single{15, 80, 5}, nested{47, 250, 16};  // 6 000 and 188 000 cells
+  const std::array<int, 3> single{10, 60, 4}, nested{47, 250, 16};  // 2 400 and 188 000 cells
   EXPECT_DOUBLE_EQ(apriori_cost_ratio(bubble_job(), single).ratio, 1.0);  // Re_p = 1
   EXPECT_DOUBLE_EQ(apriori_cost_ratio(bubble_job(), nested).ratio, 1.0);
   const CostRatio sscp = apriori_cost_ratio(sscp_like_job(), single);  // Re_p 475.4 ≥ the reference
@@ -112,9 +112,10 @@ TEST(CostModel, JobRatioUsesHistoryOfSimilarJobsElseAPriori) {
   EXPECT_NEAR(r.ratio, 1.25, 2e-12);
   auto gb = job;
   gb["numerics"]["drag"] = "gidaspow_blend";
-  const CostRatio a = job_cost_ratio(history, gb, {15, 80, 5});
+  const CostRatio a = job_cost_ratio(history, gb, {15, 80, 5});  // 6 000 cells: a nested-start grid
   EXPECT_EQ(a.source, CostSource::kAPriori);
-  EXPECT_DOUBLE_EQ(a.ratio, kReferenceSingleGridRatio);
+  EXPECT_DOUBLE_EQ(a.ratio, kReferenceNestedRatio);
+  EXPECT_DOUBLE_EQ(job_cost_ratio(history, gb, {10, 60, 4}).ratio, kReferenceSingleGridRatio);
 }
 
 TEST(CostModel, EstimatedSecondsScaleWithTheRatio) {

@@ -101,7 +101,29 @@ TEST(TargetPlan, HistoryOfSimilarJobsSetsTheCosts) {
     EXPECT_NEAR(g.cpu_s, 1.7 * base, 1e-9 * base);
   }
   EXPECT_TRUE(target_plan_json(plan)["cases"][0]["costs_from_history"].get<bool>());
+  EXPECT_EQ(target_plan_json(plan)["cases"][0]["grids"][0]["cost_source"], "history");
   EXPECT_FALSE(plan_for_target(s, 0.01, m).cases.front().costs_from_history);
+}
+
+// The header says where the costs come from: the history where it applied
+// to every grid, the a-priori model (and its scale) where it applied to none.
+TEST(TargetPlan, HeaderNamesTheCostSourceThatWasUsed) {
+  const Study s = quickstart();
+  RdeModel m;
+  m.cost_scale = 3;
+  const auto key = design_series(s).front();
+  const auto cells = grids_for_case(s, s.cases.front()).front();
+  const double n = static_cast<double>(cells[0]) * cells[1] * cells[2];
+  CostHistory history;
+  history[cost_similarity_key(make_job_document(s, key, cells))] = {{n, 1.7 * base_cpu_seconds(n)}};
+  const std::string measured = target_plan_text(plan_for_target(s, 0.01, m, history));
+  const std::string header = measured.substr(0, measured.find("\ncase "));
+  EXPECT_NE(header.find("costs of every grid from finished similar jobs"), std::string::npos) << header;
+  EXPECT_EQ(header.find("a-priori cost model"), std::string::npos) << header;
+  const std::string modelled = target_plan_text(plan_for_target(s, 0.01, m));
+  EXPECT_NE(modelled.find("costs from the a-priori cost model × 3"), std::string::npos) << modelled;
+  EXPECT_EQ(modelled.find("similar jobs"), std::string::npos) << modelled;
+  EXPECT_EQ(target_plan_json(plan_for_target(s, 0.01, m))["cost_basis"], cost_basis_text(plan_for_target(s, 0.01, m)));
 }
 
 }  // namespace

@@ -13,6 +13,6 @@ std::string version_string();
 
 // The part of the version that changes results: part of every job_hash.
 // Bump kSolverVersion whenever a change alters what the worker computes.
-inline constexpr const char* kSolverVersion = "gridfree-solver/4";
+inline constexpr const char* kSolverVersion = "gridfree-solver/5";
 
 }  // namespace gridfree

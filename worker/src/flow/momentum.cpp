@@ -3,26 +3,28 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "flow/parallel.h"
 
 namespace gridfree {
 namespace {
 
-// Neighbour of face coordinate x along direction b (dir = ±1) in a face
-// layout: the wrapped coordinate on periodic axes, nullopt beyond a
-// non-periodic boundary.
-std::optional<std::array<int, 3>> step(const Grid& g, const FaceLayout& lay, std::array<int, 3> x,
-                                       int b, int dir) {
-  const int v = x[b] + dir;
-  if (v < 0 || v >= lay.n[b]) {
-    if (!g.periodic[b]) return std::nullopt;
-    x[b] = (v + lay.n[b]) % lay.n[b];
-    return x;
+// Sentinel of `shifted`: no face there.
+constexpr long kNoFace = -1;
+
+// Index of the face k steps along direction b from face coordinate x
+// (k = ±1 the neighbour, ±2 the one beyond) in a face layout: wrapped on
+// periodic axes, kNoFace beyond a non-periodic boundary. Returns an index,
+// not coordinates: this runs for every face of every assembly.
+long shifted(const Grid& g, const FaceLayout& lay, std::array<int, 3> x, int b, int k) {
+  const int n = lay.n[b];
+  int v = x[b] + k;
+  if (v < 0 || v >= n) {
+    if (!g.periodic[b]) return kNoFace;
+    v = ((v % n) + n) % n;
   }
   x[b] = v;
-  return x;
+  return static_cast<long>(lay.index(x));
 }
 
 // Scalar-grid face index (along b) of cell x's face on `side`.
@@ -58,6 +60,9 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
   std::vector<double> row_residual(lay.size()), row_scale(lay.size());
   auto nb = neighbour_arrays(eq);
   const long faces = static_cast<long>(lay.size());
+  // Role of the faces at each position along the normal axis.
+  std::vector<FaceRole> role_at(std::size_t(lay.n[a]));
+  for (int f = 0; f < lay.n[a]; ++f) role_at[std::size_t(f)] = face_role(g, problem.bc, a, f);
 
 #pragma omp parallel for schedule(static) if (faces > kMinParallel)
   for (long fl = 0; fl < faces; ++fl) {
@@ -65,8 +70,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
     const std::array<int, 3> x = face_coords(lay, P);
     const int fa = x[a];
     for (int b = 0; b < 3; ++b) (*nb[b][0])[P] = (*nb[b][1])[P] = 0.0;
-    const FaceRole role = face_role(g, problem.bc, a, fa);
-    if (role == FaceRole::kFixed) {
+    if (role_at[std::size_t(fa)] == FaceRole::kFixed) {
       eq.ap[P] = 1.0;
       eq.b[P] = u[P];
       d[P] = 0.0;
@@ -87,7 +91,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
         const int dir = side == 0 ? -1 : 1;
         // Mass flux F (along +bd) through this CV face, and diffusion coefficient.
         double F = 0, D = 0;
-        std::optional<std::array<int, 3>> nx = step(g, lay, x, bd, dir);
+        long N = shifted(g, lay, x, bd, dir);  // the neighbour face, or kNoFace
         TangentialGhost ghost{1.0, 0.0, 0.0};
         if (bd == a) {
           const bool has_cell = side == 0 ? hasL : hasR;
@@ -97,7 +101,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
             D = mu * g.face_area(a) / g.h(a);
           } else {
             F = mass_flux[a][P];  // ghost cell beyond an outflow: zero gradient, no viscous flux
-            nx.reset();
+            N = kNoFace;
           }
         } else {
           double sumF = 0;
@@ -106,7 +110,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
           if (hasR) { sumF += mass_flux[bd][cell_face(g, lb, xr, bd, side)]; ++count; }
           F = sumF / count;
           D = mu * g.face_area(bd) / g.h(bd);
-          if (!nx) {
+          if (N == kNoFace) {
             ghost = tangential_ghost(problem.bc[bd][side]);
             D *= ghost.diffusion;
           }
@@ -115,15 +119,13 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
         sum_nb += anb;
         net_out += side == 0 ? -F : F;
         // Where the neighbour value comes from.
-        std::size_t N = 0;
-        if (!nx) {  // ghost: φ_g = scale φ_P + value
+        if (N == kNoFace) {  // ghost: φ_g = scale φ_P + value
           ap_fold -= anb * ghost.scale;
           b += anb * ghost.value;
         } else {
-          N = lay.index(*nx);
-          if (N == P) {
+          if (std::size_t(N) == P) {
             ap_fold -= anb;  // a single periodic cell: the neighbour is P itself
-          } else if (bd == a && face_role(g, problem.bc, a, (*nx)[a]) == FaceRole::kFixed) {
+          } else if (bd == a && !g.periodic[a] && role_at[std::size_t(fa + dir)] == FaceRole::kFixed) {
             b += anb * u[N];
           } else {
             (*nb[bd][side])[P] = anb;
@@ -132,14 +134,14 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
           }
         }
         // Deferred correction: −F_out (φ_TVD − φ_FOU) of the previous iterate.
-        if (tvd && nx && N != P) {
+        if (tvd && N != kNoFace && std::size_t(N) != P) {
+          // Upwind C (the neighbour or P), downwind D, and U one beyond C.
           const bool from_neighbour = side == 0 ? F > 0 : F < 0;
-          const std::array<int, 3>& xc = from_neighbour ? *nx : x;
-          const auto xu = step(g, lay, xc, bd, from_neighbour ? dir : -dir);
-          if (xu) {
-            const double phi_c = u[lay.index(xc)];
+          const long U = shifted(g, lay, x, bd, from_neighbour ? 2 * dir : -dir);
+          if (U != kNoFace) {
+            const double phi_c = from_neighbour ? u[N] : u[P];
             const double phi_d = from_neighbour ? u[P] : u[N];
-            const double phi_u = u[lay.index(*xu)];
+            const double phi_u = u[U];
             const double face = limited_face_value(problem.convection, phi_u, phi_c, phi_d);
             const double f_out = side == 0 ? -F : F;
             b -= f_out * (face - phi_c);

@@ -12,6 +12,7 @@
 #include "flow/outer_status.h"
 #include "flow/residuals.h"
 #include "flow/simplec_sweep.h"
+#include "flow/stall_monitor.h"
 
 namespace gridfree {
 namespace {
@@ -47,6 +48,8 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
   std::unique_ptr<AndersonMixer> mixer;
   std::vector<double> x_entering;
   if (settings.anderson_depth > 0) mixer = std::make_unique<AndersonMixer>(settings.anderson_depth);
+  std::optional<StallMonitor> stall;
+  if (settings.stall_window > 0) stall.emplace(settings.stall_window);
 
   int first_iteration = 1;
   if (control.resume) {
@@ -103,6 +106,13 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     if (it >= settings.min_iterations && drag_fresh && report.continuity < tol && report.momentum < tol &&
         (!qoi || report.qoi_change < tol)) {
       out.status = SolveStatus::kConverged;
+      return out;
+    }
+    if (stall && stall->stalled(std::max(report.continuity, report.momentum))) {
+      out.status = SolveStatus::kNotConverged;
+      out.reason = not_converged_reason("stalling for " + std::to_string(settings.stall_window) +
+                                            " iterations at iteration " + std::to_string(it),
+                                        out, tol);
       return out;
     }
     if (control.stop_requested && control.stop_requested()) {

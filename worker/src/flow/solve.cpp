@@ -44,12 +44,12 @@ double seconds_since(Clock::time_point t0) {
 }
 
 // A solution on a coarser grid: the nested start of a finer one, used only
-// when `converged`.
+// when `usable`.
 struct CoarseSolution {
   Grid grid;
   CellField p;
   FaceVector u;
-  bool converged = false;
+  bool usable = false;
   nlohmann::json levels = nlohmann::json::array();  // what each coarser solve did, coarsest first
 };
 
@@ -69,6 +69,18 @@ std::optional<std::array<int, 3>> coarser_cells(const std::array<int, 3>& n, std
 JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const SolveOptions& options,
                      CoarseSolution* keep);
 
+// A coarse level starts the grid above when it converged, or when it
+// stopped (stalled, or at the cap) with both residuals within
+// kUsableStartFactor × the steady tolerance: a limit cycle just above the
+// tolerance is still a close start (docs/SOLVER.md "Nested start").
+constexpr double kUsableStartFactor = 10;
+bool usable_start(const JobResult& r, double steady_tolerance) {
+  if (r.status == SolveStatus::kConverged) return true;
+  const double worst = std::max(r.residual_continuity, r.residual_momentum);
+  return r.status == SolveStatus::kNotConverged && std::isfinite(worst) &&
+         worst <= kUsableStartFactor * steady_tolerance;
+}
+
 // Solves the job on the coarser grid (itself started the same way), at
 // most options.nested_max_iterations outer iterations; nullopt when the
 // grid has no coarser level. The levels are reported whether or not the
@@ -81,6 +93,7 @@ std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet
   coarse.numerics.cells = *cells;
   coarse.numerics.max_iterations = std::min(job.numerics.max_iterations, options.nested_max_iterations);
   SolveOptions quiet = options;
+  quiet.simple.stall_window = options.nested_stall_window;
   quiet.on_iteration = {};
   quiet.vtk_dir.reset();
   quiet.checkpoint_file.reset();  // a checkpoint is of the job's own grid only
@@ -88,14 +101,18 @@ std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet
   spdlog::info("nested start: solving on {}x{}x{} cells first", (*cells)[0], (*cells)[1], (*cells)[2]);
   CoarseSolution sol;
   const JobResult r = solve_grid(coarse, particles, quiet, &sol);
-  sol.converged = r.status == SolveStatus::kConverged;
+  sol.usable = usable_start(r, coarse.numerics.tolerances.steady);
   sol.levels.push_back({{"cells", *cells},
                         {"status", solve_status_name(r.status)},
                         {"iterations", r.iterations},
+                        {"used", sol.usable},
                         {"wall_s", r.wall_s}});
-  if (!sol.converged)
+  if (!sol.usable)
     spdlog::info("nested start: the coarse solve ended {} after {} iterations; starting from the analytic warm start",
                  solve_status_name(r.status), r.iterations);
+  else if (r.status != SolveStatus::kConverged)
+    spdlog::info("nested start: the coarse solve stopped ({}) within {}× the steady tolerance; starting from it",
+                 r.reason, kUsableStartFactor);
   return sol;
 }
 
@@ -212,7 +229,7 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
   std::unique_ptr<FasCoarseLevel> fas_coarse;  // the two-grid FAS prototype's coarse level
   if (coarse) {
     result.extra["nested_start"] = coarse->levels;
-    if (coarse->converged) {
+    if (coarse->usable) {
       state.p = prolong_cells(coarse->grid, coarse->p, g);
       state.u = prolong_faces(coarse->grid, coarse->u, g);
       if (options.simple.fas_smoothing_sweeps > 0)

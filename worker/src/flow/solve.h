@@ -28,11 +28,16 @@ struct SolveOptions {
   // axis, itself started the same way (docs/SOLVER.md, "Nested start");
   // off with cold_start.
   bool nested_start = true;
-  std::size_t nested_min_cells = 20000;  // no nested start below this many cells
+  std::size_t nested_min_cells = 5000;  // no nested start below this many cells (docs/SOLVER.md)
   // A coarse level that has not converged after this many outer iterations
-  // (or the job's max_iterations, if fewer) is abandoned and the grid above
-  // it starts from the analytic warm start (docs/SOLVER.md, "Nested start").
+  // (or the job's max_iterations, if fewer) stops; unless its residuals are
+  // within 10× the steady tolerance, the grid above it starts from the
+  // analytic warm start (docs/SOLVER.md, "Nested start").
   int nested_max_iterations = 1000;
+  // A coarse level also stops when its residual has stalled for this many
+  // outer iterations (flow/stall_monitor.h); its solution is still used when
+  // within 10× the steady tolerance (docs/SOLVER.md, "Nested start").
+  int nested_stall_window = 100;
   // Called after every outer iteration (progress output).
   IterationCallback on_iteration;
   // Stop and resume (flow/checkpoint.h, docs/INTERFACE.md §2). Polled after

@@ -21,41 +21,6 @@
 
 namespace gridfree {
 
-double limiter_psi(Limiter limiter, double r) {
-  switch (limiter) {
-    case Limiter::kFou: return 0.0;
-    case Limiter::kCentral: return 1.0;
-    case Limiter::kMinmod: return std::max(0.0, std::min(1.0, r));
-    case Limiter::kVanLeer:
-      if (r <= 0) return 0.0;
-      return r > 1 ? 2.0 / (1.0 + 1.0 / r) : 2.0 * r / (1.0 + r);
-    case Limiter::kMuscl: return std::max(0.0, std::min({2.0 * r, 0.5 * (1.0 + r), 2.0}));
-    case Limiter::kSuperbee: return std::max({0.0, std::min(1.0, 2.0 * r), std::min(2.0, r)});
-  }
-  return 0.0;  // unreachable: every enumerator is handled above
-}
-
-// Convention for a flat downwind difference (φ_D = φ_C): the ratio is taken
-// as ±kLargeRatio with the sign of the numerator (0 when φ_U = φ_C too), so
-// ψ saturates at its r → ±∞ value. The face value does not depend on it,
-// since ψ multiplies φ_D − φ_C = 0. Finite quotients are clamped to the same
-// bound, so no overflow to ±inf reaches ψ.
-double limiter_ratio(double phi_u, double phi_c, double phi_d) {
-  constexpr double kLargeRatio = 1e30;
-  const double num = phi_c - phi_u;
-  const double den = phi_d - phi_c;
-  if (den == 0.0) {
-    if (num == 0.0) return 0.0;
-    return num > 0 ? kLargeRatio : -kLargeRatio;
-  }
-  return std::clamp(num / den, -kLargeRatio, kLargeRatio);
-}
-
-double limited_face_value(Limiter limiter, double phi_u, double phi_c, double phi_d) {
-  const double psi = limiter_psi(limiter, limiter_ratio(phi_u, phi_c, phi_d));
-  return phi_c + 0.5 * psi * (phi_d - phi_c);
-}
-
 const std::vector<LimiterInfo>& limiters() {
   static const std::vector<LimiterInfo> table = {
       {Limiter::kFou, "fou", "first-order upwind (Courant, Isaacson & Rees 1952)", 1},
