@@ -33,9 +33,11 @@ test-unit: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L unit
 
 # Unit and integration tests under AddressSanitizer + UndefinedBehaviorSanitizer
-# (GCC); verification tests are skipped (minutes of numerics, no new paths).
+# (GCC, -O1 -g1); verification tests are neither built nor run there (minutes
+# of numerics, no new paths).
 test-sanitize: test-deps
-	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_SANITIZE=ON -DGRIDFREE_BUILD_BENCH=OFF >/dev/null
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_SANITIZE=ON -DGRIDFREE_BUILD_BENCH=OFF \
+	  -DGRIDFREE_BUILD_VERIFICATION_TESTS=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && OMP_WAIT_POLICY=passive ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L 'unit|integration' $(CTEST_ARGS)

@@ -183,8 +183,9 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("-o,--output", opts->output, "result JSON file (default: stdout)");
   sub->add_option("--threads", opts->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all cores)");
   sub->add_option("--start", opts->start,
-                  "nested: from the solution on a grid with half the cells per axis (grids of 20000 cells or "
-                  "more); analytic: from the plug-flow warm start only")
+                  "nested: from the solution on a grid with half the cells per axis (grids of " +
+                      std::to_string(SolveOptions{}.nested_min_cells) +
+                      " cells or more); analytic: from the plug-flow warm start only")
       ->check(CLI::IsMember({"nested", "analytic"}))
       ->capture_default_str();
   sub->add_option("--max-memory", opts->max_memory,

@@ -27,8 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The docs/INTERFACE.md job on 15x100x5 cells (Δ* = 2; no nested start below
-// 20 000 cells, so every iteration is on the job's own grid).
+// The docs/INTERFACE.md job on 15x100x5 cells (Δ* = 2). Its nested start's
+// coarse level writes no progress and no checkpoint: the iterations counted
+// and resumed below are the job's own grid's.
 nlohmann::json small_bed_job() {
   nlohmann::json job = gridfree::test::contract_job();
   job["numerics"]["grid"] = {{"cells", {15, 100, 5}}};

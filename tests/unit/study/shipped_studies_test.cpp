@@ -1,0 +1,69 @@
+// The studies shipped in studies/: each one parses and expands without
+// duplicate jobs, and the reduced and single-series studies behind
+// docs/REPRODUCTION.md are made of the same job documents as the full
+// studies (equal job hashes), so results run for one are reused by the
+// other from the same database instead of being computed again.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+#include "study/study.h"
+
+namespace gridfree {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kStudies = fs::path(GRIDFREE_SOURCE_DIR) / "studies";
+
+ExpandedStudy expanded(const std::string& file) { return expand(parse_study((kStudies / file).string())); }
+
+std::set<std::string> hashes_of(const ExpandedStudy& ex) {
+  std::set<std::string> out;
+  for (const auto& j : ex.jobs) out.insert(j.hash);
+  return out;
+}
+
+TEST(ShippedStudies, EveryStudyExpandsWithoutDuplicateJobs) {
+  int seen = 0;
+  for (const auto& entry : fs::directory_iterator(kStudies)) {
+    if (entry.path().extension() != ".json") continue;
+    ++seen;
+    SCOPED_TRACE(entry.path().filename().string());
+    const auto ex = expanded(entry.path().filename().string());
+    EXPECT_FALSE(ex.series.empty());
+    EXPECT_EQ(hashes_of(ex).size(), ex.jobs.size());
+  }
+  EXPECT_GE(seen, 10);
+}
+
+// Every job of `part` is a job of `whole`.
+void expect_jobs_contained(const std::string& part, const std::string& whole, std::size_t expected_jobs) {
+  SCOPED_TRACE(part + " in " + whole);
+  const auto small = hashes_of(expanded(part));
+  const auto large = hashes_of(expanded(whole));
+  EXPECT_EQ(small.size(), expected_jobs);
+  for (const auto& h : small) EXPECT_TRUE(large.count(h)) << h;
+}
+
+TEST(ShippedStudies, ReducedStudiesAreMadeOfTheFullStudiesJobs) {
+  expect_jobs_contained("bursting_bubble_baseline.json", "bursting_bubble_paper.json", 18);
+  expect_jobs_contained("bursting_bubble_medium.json", "bursting_bubble_paper.json", 12 * 13);
+  expect_jobs_contained("sscp_reduced.json", "sscp_paper.json", 12 * 9);
+}
+
+TEST(ShippedStudies, TheFm18BaselineExtendsTheFm18MediumStudysBaselineSeries) {
+  const auto baseline = expanded("bursting_bubble_baseline_fm18.json");
+  ASSERT_EQ(baseline.series.size(), 1u);
+  EXPECT_EQ(baseline.series[0].label(), "PC1 superbee fwhm6 bvk fm18");
+  ASSERT_EQ(baseline.jobs.size(), 18u);
+  // The medium study has the same series on the 11 coarsest grids.
+  const auto medium = hashes_of(expanded("bursting_bubble_medium_fm18.json"));
+  std::size_t shared = 0;
+  for (const auto& j : baseline.jobs) shared += medium.count(j.hash);
+  EXPECT_EQ(shared, 11u);
+  for (const auto& j : baseline.jobs) EXPECT_EQ(j.doc["numerics"]["deposition"]["preset"], "fm18");
+}
+
+}  // namespace
+}  // namespace gridfree
