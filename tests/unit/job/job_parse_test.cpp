@@ -111,6 +111,18 @@ TEST(ParseJob, ProbesMustLieInsideTheDomain) {
   EXPECT_TRUE(has_problem(problems_of(j), "/case/probes/pressure_drop/y2_dp"));
 }
 
+TEST(ParseJob, StallWindowIsReadAndOutOfRangeRefused) {
+  json j = test::contract_job();
+  j["numerics"]["stall_window"] = 250;
+  EXPECT_EQ(parse_job(j, ".").numerics.stall_window, 250);
+  j["numerics"]["stall_window"] = 0;
+  EXPECT_EQ(parse_job(j, ".").numerics.stall_window, 0);
+  for (const json& bad : {json(-1), json(2.5), json("long"), json(2000000000)}) {
+    j["numerics"]["stall_window"] = bad;
+    EXPECT_TRUE(has_problem(problems_of(j), "/numerics/stall_window")) << bad;
+  }
+}
+
 TEST(ParseJob, CollectsSemanticProblemsTogether) {
   json j = test::contract_job();
   j["case"]["probes"]["pressure_drop"]["y2_dp"] = 300;                       // outside L_y* = 200

@@ -32,6 +32,8 @@ TEST(SchemaDefaults, AreTheParserDefaults) {
   EXPECT_EQ(job.numerics.tolerances.filter, tol["filter"]["default"].get<double>());
   EXPECT_EQ(job.numerics.tolerances.steady, tol["steady"]["default"].get<double>());
   EXPECT_EQ(job.numerics.max_iterations, d["max_iterations"]["default"].get<int>());
+  EXPECT_FALSE(j["numerics"].contains("stall_window"));
+  EXPECT_EQ(job.numerics.stall_window, d["stall_window"]["default"].get<int>());
   const auto gravity = d["case"]["properties"]["gravity_cm_s2"]["default"].get<std::array<double, 3>>();
   EXPECT_EQ(job.case_spec.gravity_cm_s2, gravity);
   EXPECT_EQ(job.case_spec.particle_velocity.thermal_cm_s,

@@ -1,5 +1,5 @@
 // A study's "numerics" reach every job it expands to (tolerances,
-// max_iterations, deposition.diffusivity), and its factor levels set the
+// max_iterations, stall_window, deposition.diffusivity), and its factor levels set the
 // job's convection, drag and deposition: what each job then computes from
 // them is checked field by field in tests/verification/flow/field_effect_test.cpp.
 #include <gtest/gtest.h>
@@ -19,6 +19,7 @@ TEST(StudyNumerics, CopiedIntoEveryJob) {
   json doc = read_json_file(kSource + "/studies/quickstart.json");
   doc["numerics"] = {{"tolerances", {{"linear", 1e-4}, {"filter", 1e-9}, {"steady", 1e-6}}},
                      {"max_iterations", 1234},
+                     {"stall_window", 150},
                      {"deposition", {{"diffusivity", "mfix"}}}};
   doc["factors"] = {{"convection", {"fou"}}, {"fwhm_dp", {8}}, {"drag", {"hkl"}}};
   doc.erase("design");
@@ -30,6 +31,7 @@ TEST(StudyNumerics, CopiedIntoEveryJob) {
     EXPECT_EQ(n["tolerances"]["filter"], 1e-9);
     EXPECT_EQ(n["tolerances"]["steady"], 1e-6);
     EXPECT_EQ(n["max_iterations"], 1234);
+    EXPECT_EQ(n["stall_window"], 150);
     EXPECT_EQ(n["deposition"]["diffusivity"], "mfix");
     EXPECT_EQ(n["deposition"]["fwhm_dp"], 8);
     EXPECT_EQ(n["convection"], "fou");
@@ -40,6 +42,7 @@ TEST(StudyNumerics, CopiedIntoEveryJob) {
 TEST(StudyNumerics, OutOfRangeValuesAreRefusedWithTheirPath) {
   json doc = read_json_file(kSource + "/studies/quickstart.json");
   doc["numerics"]["tolerances"]["linear"] = 2.0;
+  doc["numerics"]["stall_window"] = -5;
   doc["timeout_s"] = -1;
   try {
     study_of(doc);
@@ -48,6 +51,7 @@ TEST(StudyNumerics, OutOfRangeValuesAreRefusedWithTheirPath) {
     const std::string what = e.what();
     EXPECT_NE(what.find("/numerics/tolerances/linear"), std::string::npos) << what;
     EXPECT_NE(what.find("/timeout_s"), std::string::npos) << what;
+    EXPECT_NE(what.find("/numerics/stall_window"), std::string::npos) << what;
   }
 }
 

@@ -45,8 +45,9 @@ struct SimpleSettings {
   int drag_interval = 4;
   double blowup = 1e6;
   // Stop as not_converged when the residual has stalled over this many
-  // iterations (flow/stall_monitor.h); 0 = off. Set only on the coarse
-  // levels of the nested start.
+  // iterations (flow/stall_monitor.h); 0 = off. The job's
+  // numerics.stall_window on its own grid; nested_stall_window on the
+  // coarse levels of the nested start.
   int stall_window = 0;
   // Anderson acceleration depth of the outer iterations (flow/anderson.h);
   // 0 = off (the default: see docs/DESIGN.md for what it measured).

@@ -92,8 +92,8 @@ std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet
   JobSpec coarse = job;
   coarse.numerics.cells = *cells;
   coarse.numerics.max_iterations = std::min(job.numerics.max_iterations, options.nested_max_iterations);
+  coarse.numerics.stall_window = options.nested_stall_window;
   SolveOptions quiet = options;
-  quiet.simple.stall_window = options.nested_stall_window;
   quiet.on_iteration = {};
   quiet.vtk_dir.reset();
   quiet.checkpoint_file.reset();  // a checkpoint is of the job's own grid only
@@ -142,6 +142,7 @@ SimpleSettings simple_settings_for(const NumericsSpec& numerics, const SimpleSet
   s.pressure_tolerance = numerics.tolerances.linear;
   s.linear_floor = std::min(s.linear_floor, numerics.tolerances.linear);
   s.max_iterations = numerics.max_iterations;
+  s.stall_window = numerics.stall_window;
   return s;
 }
 

@@ -61,8 +61,8 @@ struct SolveStopped : std::runtime_error {
   bool checkpoint_written = false;
 };
 
-// SimpleSettings of a job: steady tolerance and max_iterations from the job,
-// the rest from `base`.
+// SimpleSettings of a job: steady tolerance, inner tolerance, max_iterations
+// and stall_window from the job, the rest from `base`.
 SimpleSettings simple_settings_for(const NumericsSpec& numerics, const SimpleSettings& base);
 
 // The grid of a case: cells from the job, lengths L* d, periodic flags.

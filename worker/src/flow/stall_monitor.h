@@ -1,7 +1,9 @@
 // Whether outer iterations have stalled: a limit cycle just above the
-// steady tolerance, which more iterations do not break. Used on the coarse
-// levels of the nested start only, whose solution is a start, not a result
-// (docs/SOLVER.md "Nested start").
+// steady tolerance, which more iterations do not break. Always on the
+// coarse levels of the nested start, whose solution is a start, not a
+// result (docs/SOLVER.md "Nested start"); on a job's own grid when its
+// numerics.stall_window asks for it (docs/SOLVER.md "Stalled outer
+// iterations"). Not part of a checkpoint: a resumed solve starts a new window.
 //
 // Stalled after iteration n when the residual max(R_c, R_m) of the last
 // `window` iterations has not fallen below `factor` × the least residual of

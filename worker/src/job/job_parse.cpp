@@ -85,6 +85,9 @@ NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, co
   const std::int64_t iterations = read_integer(j, "max_iterations", path, problems, 20000);
   if (iterations < 1 || iterations > 1000000000) problems.add(child_pointer(path, "max_iterations"), "must be from 1 to 1e9");
   else n.max_iterations = static_cast<int>(iterations);
+  const std::int64_t window = read_integer(j, "stall_window", path, problems, 0);
+  if (window < 0 || window > 1000000000) problems.add(child_pointer(path, "stall_window"), "must be from 0 (off) to 1e9");
+  else n.stall_window = static_cast<int>(window);
   return n;
 }
 

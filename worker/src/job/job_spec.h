@@ -52,6 +52,7 @@ struct NumericsSpec {
   DepositionSpec deposition;
   TolerancesSpec tolerances;
   int max_iterations = 20000;
+  int stall_window = 0;  // outer iterations without halving the residual before a stop; 0 = off
 };
 
 struct JobSpec {
