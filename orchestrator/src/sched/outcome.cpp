@@ -98,7 +98,8 @@ JobOutcome classify_exit(const JobExit& e) {
     // Our timeout's SIGTERM, answered with a checkpoint: the work is kept and
     // the next attempt continues from it, so no attempt is spent. Each such
     // stop advances the checkpoint by at least one outer iteration, so a job
-    // still ends, at the latest at numerics.max_iterations.
+    // still ends, at the latest at numerics.max_iterations (or, for a limit
+    // cycle, at its numerics.stall_window).
     out.kind = OutcomeKind::kReleased;
     out.row.reason = describe(e) + "; checkpoint kept, the next attempt resumes from it";
     return out;
