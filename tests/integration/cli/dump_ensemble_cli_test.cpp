@@ -77,7 +77,7 @@ std::vector<double> numbers(const std::string& text) {
 TEST(DumpEnsembleCli, SnapshotsOfOneDumpAreAnEnsembleAndMatchTheirCsv) {
   const fs::path dir = gridfree::test_support::fresh_scratch_dir("cli_test", "dump_ensemble");
   auto c = quickstart_case();
-  const double length_cm = c["particle_diameter_cm"].get<double>();
+  const double d_cm = c["particle_diameter_cm"].get<double>();  // domain_dp × d = the box in cm
   const std::vector<int> seeds = {11, 12, 13};
   std::vector<fs::path> csvs;
   for (int s : seeds) csvs.push_back(generate(dir, s));
@@ -91,7 +91,7 @@ TEST(DumpEnsembleCli, SnapshotsOfOneDumpAreAnEnsembleAndMatchTheirCsv) {
       ASSERT_GT(rows.size(), 1000u);
       dump << "ITEM: TIMESTEP\n" << 1000 * (k + 1) << "\nITEM: NUMBER OF ATOMS\n" << rows.size()
            << "\nITEM: BOX BOUNDS pp ff pp\n";
-      for (int a = 0; a < 3; ++a) dump << "0 " << c["domain_dp"][a].get<double>() * length_cm << "\n";
+      for (int a = 0; a < 3; ++a) dump << "0 " << c["domain_dp"][a].get<double>() * d_cm << "\n";
       dump << "ITEM: ATOMS id type diameter z y x\n";
       for (std::size_t i = 0; i < rows.size(); ++i)
         dump << i + 1 << " 1 " << rows[i][3] << " " << rows[i][2] << " " << rows[i][1] << " " << rows[i][0] << "\n";
