@@ -15,6 +15,7 @@
 #include <malloc.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <filesystem>
@@ -86,13 +87,25 @@ void check_memory(const JobSpec& job, const std::string& max_memory) {
                                            " (" + memory_text(limit) + ")");
 }
 
-nlohmann::json progress_json(const IterationReport& r, double elapsed, const std::array<int, 3>& cells, int threads) {
+// Wall seconds of this process's outer iterations: the latest and the
+// longest so far (both unknown until two iterations have been reported,
+// since the first one's start is hidden behind the setup).
+struct IterationTimes {
+  std::optional<double> latest_s, longest_s;
+};
+
+nlohmann::json optional_number(const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); }
+
+nlohmann::json progress_json(const IterationReport& r, double elapsed, const IterationTimes& times,
+                             const std::array<int, 3>& cells, int threads) {
   return {{"iteration", r.iteration},
           {"continuity", r.continuity},
           {"momentum", r.momentum},
           {"dp_star", r.qoi ? nlohmann::json(*r.qoi) : nlohmann::json(nullptr)},
           {"dp_star_change", r.qoi_change},
           {"elapsed_s", elapsed},
+          {"iteration_s", optional_number(times.latest_s)},
+          {"longest_iteration_s", optional_number(times.longest_s)},
           {"cells", {cells[0], cells[1], cells[2]}},
           {"threads", threads},
           {"pid", static_cast<long long>(::getpid())},
@@ -125,15 +138,22 @@ int run_solve(const SolveCommandOptions& o) {
   options.stop_requested = [] { return stop_requested(); };
   const auto start = std::chrono::steady_clock::now();
   auto last = start;
+  std::optional<std::chrono::steady_clock::time_point> previous_iteration;
+  IterationTimes times;
   options.on_iteration = [&](const IterationReport& r) {
     const auto now = std::chrono::steady_clock::now();
+    if (previous_iteration) {
+      times.latest_s = std::chrono::duration<double>(now - *previous_iteration).count();
+      times.longest_s = std::max(times.longest_s.value_or(0.0), *times.latest_s);
+    }
+    previous_iteration = now;
     const bool every = spdlog::should_log(spdlog::level::debug);  // -v: every iteration
     if (!every && r.iteration != 1 && now - last < std::chrono::seconds(2)) return;
     last = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
     if (!o.progress_file.empty()) {
       try {
-        write_atomically(o.progress_file, progress_json(r, elapsed, job.numerics.cells, threads).dump() + "\n");
+        write_atomically(o.progress_file, progress_json(r, elapsed, times, job.numerics.cells, threads).dump() + "\n");
       } catch (const std::exception& e) {
         spdlog::warn("progress file: {}", e.what());
       }

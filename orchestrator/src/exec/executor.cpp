@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "exec/worker_progress.h"
+
 namespace gridfree {
 
 std::string describe(const JobExit& e) {
@@ -36,7 +38,7 @@ std::string describe(const JobExit& e) {
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
                                         int threads) {
   return {worker.string(), "solve", (run_dir / "job.json").string(), "-o", (run_dir / "result.json").string(),
-          "--threads", std::to_string(threads < 1 ? 1 : threads), "--progress", (run_dir / "progress.json").string(),
+          "--threads", std::to_string(threads < 1 ? 1 : threads), "--progress", progress_file(run_dir).string(),
           "--checkpoint", checkpoint_file(run_dir).string(), "--resume", checkpoint_file(run_dir).string()};
 }
 

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -14,7 +15,10 @@
 #include <sstream>
 #include <thread>
 
+#include <spdlog/spdlog.h>
+
 #include "core/process_identity.h"
+#include "exec/worker_progress.h"
 
 extern char** environ;
 
@@ -129,6 +133,7 @@ void LocalExecutor::start(const JobLaunch& job) {
   c.run_dir = job.run_dir;
   c.started = Clock::now();
   c.timeout_s = job.timeout_s;
+  c.launch_grace_s = stop_grace_for_run(job.run_dir, stop_grace_s_);
   if (job.timeout_s > 0)
     c.deadline = c.started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(job.timeout_s));
   running_[pid] = std::move(c);
@@ -167,6 +172,7 @@ void LocalExecutor::start_held(const JobLaunch& job, const std::vector<char*>& a
   c.run_dir = job.run_dir;
   c.started = Clock::now();
   c.timeout_s = job.timeout_s;
+  c.launch_grace_s = stop_grace_for_run(job.run_dir, stop_grace_s_);
   c.gate = gate[1];
   if (job.timeout_s > 0)
     c.deadline = c.started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(job.timeout_s));
@@ -179,16 +185,23 @@ std::string LocalExecutor::external_id(long long job_id) const {
   return "";
 }
 
+// The larger of what the current attempt's progress file says and what an
+// earlier attempt's said at launch (a resumed worker reports its iteration
+// time only from its second iteration on).
+LocalExecutor::Clock::duration LocalExecutor::grace_for(const Child& c) const {
+  const double s = std::max(c.launch_grace_s, stop_grace_for_run(c.run_dir, stop_grace_s_));
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+
 // Timeout: SIGTERM to the group (the worker checkpoints), SIGKILL after the
-// grace period.
+// grace period, which grows with the worker's longest outer iteration.
 void LocalExecutor::enforce_deadlines() {
   const auto now = Clock::now();
-  const auto grace = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(stop_grace_s_));
   for (auto& [pid, c] : running_) {
     if (!c.timed_out && c.deadline && now >= *c.deadline) {
       killpg(pid, SIGTERM);
       c.timed_out = true;
-      c.kill_at = now + grace;
+      c.kill_at = now + grace_for(c);
     } else if (c.kill_at && now >= *c.kill_at) {
       killpg(pid, SIGKILL);
       c.kill_at.reset();
@@ -246,31 +259,48 @@ std::optional<JobExit> LocalExecutor::wait_any(double timeout_s) {
 }
 
 // Shutdown: SIGTERM to every running worker (each writes its checkpoint),
-// then SIGKILL to whatever is left after the grace period.
+// then SIGKILL to whatever is left after its grace period.
 std::vector<long long> LocalExecutor::kill_all() {
   std::vector<long long> ids;
+  const auto now = Clock::now();
+  std::map<pid_t, Clock::time_point> until;
   for (auto& [pid, c] : running_) {
     if (c.gate >= 0) {  // held: never ran; exits on the closed pipe
       ::close(c.gate);
       c.gate = -1;
       killpg(pid, SIGKILL);
-    } else {
-      killpg(pid, SIGTERM);
+      until[pid] = now;
+      continue;
     }
+    killpg(pid, SIGTERM);
+    const auto grace = grace_for(c);
+    until[pid] = now + grace;
+    const double grace_s = std::chrono::duration<double>(grace).count();
+    if (grace_s > stop_grace_s_ + 1)
+      spdlog::info("job {}: waiting up to {:.0f} s for its worker to finish the outer iteration and write a checkpoint",
+                   c.job_id, grace_s);
   }
-  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(stop_grace_s_));
-  for (auto& [pid, c] : running_) {
-    int status = 0;
-    while (waitpid(pid, &status, WNOHANG) == 0) {
-      if (Clock::now() >= until) {
+  // All at once: each worker is killed at its own deadline, not after the
+  // ones before it have ended.
+  while (!until.empty()) {
+    for (auto it = until.begin(); it != until.end();) {
+      int status = 0;
+      const pid_t pid = it->first;
+      bool ended = waitpid(pid, &status, WNOHANG) != 0;
+      if (!ended && Clock::now() >= it->second) {
         killpg(pid, SIGKILL);
         waitpid(pid, &status, 0);
-        break;
+        ended = true;
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      if (!ended) {
+        ++it;
+        continue;
+      }
+      killpg(pid, SIGKILL);  // anything the worker left in its group
+      ids.push_back(running_.at(pid).job_id);
+      it = until.erase(it);
     }
-    killpg(pid, SIGKILL);  // anything the worker left in its group
-    ids.push_back(c.job_id);
+    if (!until.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   running_.clear();
   for (const auto& e : failed_launches_) ids.push_back(e.job_id);

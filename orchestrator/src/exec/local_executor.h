@@ -4,7 +4,8 @@
 // /dev/null, stdout+stderr into <run_dir>/worker.log. Finished children are
 // found by waitpid(WNOHANG) polling. A timeout or a shutdown sends SIGTERM to
 // the whole group (the worker writes a checkpoint and exits 130) and SIGKILL
-// after the grace period (kStopGraceSeconds).
+// after the grace period: stop_grace_s (kStopGraceSeconds) plus 1.5 × the
+// worker's longest outer iteration so far (exec/worker_progress.h).
 //
 // A held launch (JobLaunch::hold) forks a child that sets up its process
 // group and then blocks reading a pipe from the orchestrator; release()
@@ -48,10 +49,12 @@ class LocalExecutor : public Executor {
     double timeout_s = 0;
     bool timed_out = false;
     std::optional<Clock::time_point> kill_at;  // SIGTERM sent: SIGKILL then
+    double launch_grace_s = 0;  // from the progress file an earlier attempt left
     int gate = -1;  // write end of the hold pipe until released
   };
   void start_held(const JobLaunch& job, const std::vector<char*>& argv, const std::string& log);
   std::optional<JobExit> reap_one();
+  Clock::duration grace_for(const Child& c) const;
   void enforce_deadlines();
 
   std::filesystem::path worker_;

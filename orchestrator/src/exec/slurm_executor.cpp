@@ -13,6 +13,7 @@
 #include "exec/slurm_exit.h"
 #include "exec/slurm_faults.h"
 #include "exec/slurm_queue.h"
+#include "exec/worker_progress.h"
 #include "study/study_plan.h"
 
 namespace gridfree {
@@ -54,6 +55,12 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
     a.time_minutes = static_cast<long>(std::ceil(job.timeout_s / 60.0)) + 1;
   else if (sized)
     a.time_minutes = ladder(std::max(5.0, settings_.margin * estimated_seconds(job.cells, a.cpus) / 60.0));
+  // An earlier attempt's progress file: its longest outer iteration widens
+  // the lead (worker_progress.h), in whole minutes so that arrays still
+  // form, and to at most half the time limit so the job still gets to work.
+  double lead = std::ceil(stop_grace_for_run(job.run_dir, kSlurmStopLeadSeconds) / 60.0) * 60.0;
+  if (a.time_minutes > 0) lead = std::min(lead, std::max<double>(kSlurmStopLeadSeconds, 30.0 * a.time_minutes));
+  a.stop_lead_s = static_cast<int>(lead);
   if (settings_.mem_mb)
     a.mem_mb = static_cast<long>(std::ceil(*settings_.mem_mb));
   else if (sized)
@@ -79,7 +86,7 @@ void SlurmExecutor::submit_unsent() {
     const SlurmArray s = shape_of(job);
     auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) {
       return x.first.cpus == s.cpus && x.first.threads == s.threads && x.first.time_minutes == s.time_minutes &&
-             x.first.mem_mb == s.mem_mb && x.second.size() < max_size;
+             x.first.mem_mb == s.mem_mb && x.first.stop_lead_s == s.stop_lead_s && x.second.size() < max_size;
     });
     if (g == groups.end()) groups.push_back({s, {job}});
     else g->second.push_back(job);

@@ -73,7 +73,7 @@ std::vector<std::string> sbatch_command(const SlurmArray& a, const SlurmSettings
   // SIGTERM to the batch shell this long before the time limit (the script
   // passes it to the worker, which checkpoints); no requeue by Slurm itself:
   // gridfree resubmits a stopped job, which resumes from its checkpoint.
-  c.push_back("--signal=B:TERM@" + std::to_string(kSlurmStopLeadSeconds));
+  c.push_back("--signal=B:TERM@" + std::to_string(a.stop_lead_s));
   c.push_back("--no-requeue");
   if (!s.partition.empty()) c.push_back("--partition=" + s.partition);
   if (!s.account.empty()) c.push_back("--account=" + s.account);

@@ -15,7 +15,9 @@ namespace gridfree {
 
 // Seconds before the time limit at which Slurm sends SIGTERM to the batch
 // shell (--signal=B:TERM@120): time for the worker to finish its outer
-// iteration and write its checkpoint before SIGKILL.
+// iteration and write its checkpoint before SIGKILL. A job resubmitted
+// after a stop gets more when its earlier attempt's outer iterations were
+// long (SlurmArray::stop_lead_s).
 inline constexpr int kSlurmStopLeadSeconds = 120;
 
 struct SlurmArray {
@@ -26,6 +28,7 @@ struct SlurmArray {
   long time_minutes = 0;                         // --time (0 = not given)
   long mem_mb = 0;                               // --mem (0 = not given)
   int throttle = 0;                              // %N (0 = none)
+  int stop_lead_s = kSlurmStopLeadSeconds;       // --signal=B:TERM@stop_lead_s
 };
 
 std::string array_script(const std::filesystem::path& worker, const SlurmArray& a,

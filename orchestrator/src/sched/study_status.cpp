@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include "sched/study_eta.h"
 #include "study/study_plan.h"
@@ -54,14 +53,6 @@ nlohmann::json series_row(Store& store, const SeriesInfo& s) {
 
 }  // namespace
 
-std::optional<nlohmann::json> read_job_progress(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  auto j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) return std::nullopt;
-  return j;
-}
-
 nlohmann::json study_detail(Store& store, long long study_id, const std::filesystem::path& runs_root, int workers) {
   nlohmann::json series = nlohmann::json::array(), running = nlohmann::json::array();
   std::vector<EtaJob> eta_jobs;
@@ -80,7 +71,7 @@ nlohmann::json study_detail(Store& store, long long study_id, const std::filesys
         ++running_count;
         e.state = EtaJob::State::kRunning;
         const auto dir = runs_root / p.job_hash;
-        const auto prog = read_job_progress(dir / "progress.json");
+        const auto prog = read_job_progress(progress_file(dir));
         if (prog && (*prog)["elapsed_s"].is_number()) e.elapsed_s = (*prog)["elapsed_s"].get<double>();
         nlohmann::json r = {{"series", s.key.label()},
                             {"delta_star", p.delta_star},

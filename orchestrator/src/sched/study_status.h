@@ -11,13 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "exec/worker_progress.h"
 #include "store/store.h"
 
 namespace gridfree {
-
-// The worker's progress file; nullopt when absent or unreadable (a job that
-// has not reached its first iteration, or an older worker).
-std::optional<nlohmann::json> read_job_progress(const std::filesystem::path& file);
 
 // {"series": [...], "running": [...], "eta": {...}} for one study; run
 // folders are <runs_root>/<job_hash>. `workers` = jobs at a time for the ETA

@@ -112,6 +112,13 @@ TEST(CheckpointCli, StoppedAtHalfResumesToTheUninterruptedResult) {
   ASSERT_EQ(solve_and_terminate_at(dir, n / 2), 130) << slurp(dir / "stopped.log");
   ASSERT_TRUE(fs::exists(dir / "checkpoint.bin"));
   EXPECT_FALSE(fs::exists(dir / "result.json"));
+  // The progress file times the outer iterations (what the orchestrator's
+  // stop grace is sized by): 0 < latest ≤ longest ≤ the whole elapsed time.
+  const nlohmann::json progress = read(dir / "progress.json");
+  ASSERT_TRUE(progress["iteration_s"].is_number() && progress["longest_iteration_s"].is_number()) << progress;
+  EXPECT_GT(progress["iteration_s"].get<double>(), 0.0);
+  EXPECT_LE(progress["iteration_s"].get<double>(), progress["longest_iteration_s"].get<double>());
+  EXPECT_LE(progress["longest_iteration_s"].get<double>(), progress["elapsed_s"].get<double>());
 
   // Resumed: continues after the checkpoint's iteration k (n/2 ≤ k < n: the
   // signal arrives during some iteration ≥ n/2, which is finished first).

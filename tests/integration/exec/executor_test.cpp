@@ -15,6 +15,7 @@
 
 #include "exec/local_executor.h"
 #include "exec/slurm_executor.h"
+#include "exec/worker_progress.h"
 #include "scratch_dir.h"
 
 namespace gridfree {
@@ -134,6 +135,49 @@ TEST(LocalExecutor, ShutdownLetsWorkersCheckpoint) {
   EXPECT_EQ(ex.in_flight(), 0u);
 }
 
+void wait_for_trap(const fs::path& run_dir) {
+  for (int k = 0; k < 400 && !fs::exists(run_dir / ".trap_ready"); ++k) usleep(25000);
+  ASSERT_TRUE(fs::exists(run_dir / ".trap_ready"));
+}
+
+// A worker whose outer iterations take longer than the base grace gets
+// 1.5 × its longest iteration more (exec/worker_progress.h): the fake needs
+// 1 s after SIGTERM; the base grace is 0.5 s, its progress file says 2 s.
+TEST(LocalExecutor, TheGraceGrowsWithTheWorkersIterationTime) {
+  const auto root = temp_dir("grace");
+  LocalExecutor ex(kFake, 0.5);
+  ex.start(launch(root, 1, "slowcheckpoint"));
+  ex.start(launch(root, 2, "slowcheckpointblind"));
+  wait_for_trap(root / "hash1");
+  wait_for_trap(root / "hash2");
+  EXPECT_EQ(ex.kill_all().size(), 2u);
+  EXPECT_TRUE(fs::exists(checkpoint_file(root / "hash1")));   // grace 3.5 s
+  EXPECT_FALSE(fs::exists(checkpoint_file(root / "hash2")));  // grace 0.5 s: killed mid-iteration
+}
+
+TEST(LocalExecutor, ATimeoutsGraceGrowsWithTheWorkersIterationTime) {
+  const auto root = temp_dir("grace_timeout");
+  LocalExecutor ex(kFake, 0.5);
+  ex.start(launch(root, 3, "slowcheckpoint", 2.0));
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  EXPECT_EQ(e.code, 130);
+  EXPECT_TRUE(fs::exists(checkpoint_file(e.run_dir)));
+}
+
+// A resumed worker reports no iteration time before its second iteration;
+// the progress file of the attempt before counts until then.
+TEST(LocalExecutor, AResumedWorkerKeepsTheGraceOfItsEarlierAttempt) {
+  const auto root = temp_dir("grace_resumed");
+  LocalExecutor ex(kFake, 0.5);
+  auto job = launch(root, 4, "slowcheckpointresumed");
+  std::ofstream(progress_file(job.run_dir)) << R"({"iteration": 7, "longest_iteration_s": 2.0})";
+  ex.start(job);
+  wait_for_trap(job.run_dir);
+  EXPECT_EQ(ex.kill_all().size(), 1u);
+  EXPECT_TRUE(fs::exists(checkpoint_file(job.run_dir)));
+}
+
 TEST(LocalExecutor, MissingWorkerIsALaunchFailure) {
   const auto root = temp_dir("missing");
   LocalExecutor ex(root / "no-such-worker");
@@ -171,6 +215,7 @@ fs::path fake_slurm(const fs::path& dir) {
     fs::permissions(bin / name, fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   };
   script("sbatch", "[ \"$1\" = --parsable ] || exit 9\n"
+                   "echo \"$@\" >> \"" + (dir / "sbatch_args").string() + "\"\n"
                    "n=$(cat \"" + (dir / "next_id").string() + "\" 2>/dev/null || echo 100)\n"
                    "echo $((n + 1)) > \"" + (dir / "next_id").string() + "\"\n"
                    "last=0; for a; do case $a in --array=0-*) last=${a#--array=0-}; last=${last%%%*} ;; esac; script=$a; done\n"
@@ -224,6 +269,43 @@ TEST(SlurmExecutor, SubmitsAnArrayAndReadsTheExitCodes) {
   ex.start(launch(dir / "runs", 3, "ok"));
   ex.flush();
   EXPECT_EQ(wait_for(ex).how, JobExit::How::kTimedOut);
+  setenv("PATH", old_path.c_str(), 1);
+}
+
+// A job resubmitted after a stop whose earlier attempt had long outer
+// iterations gets Slurm's SIGTERM earlier: 120 s + 1.5 × 210 s = 435 s,
+// rounded up to whole minutes (480 s), at most half the time limit.
+TEST(SlurmExecutor, TheStopLeadGrowsWithTheEarlierAttemptsIterationTime) {
+  const auto dir = temp_dir("slurm_lead");
+  const auto bin = fake_slurm(dir);
+  const std::string old_path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
+  std::ofstream(dir / "mode") << "hold";
+  auto lines = [&] {
+    std::ifstream in(dir / "sbatch_args");
+    std::vector<std::string> out;
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+  };
+  for (const double limit_minutes : {60.0, 6.0}) {
+    fs::remove(dir / "sbatch_args");
+    SlurmSettings settings;
+    settings.poll_s = 0.05;
+    settings.time_minutes = limit_minutes;
+    SlurmExecutor ex(kFake, dir / "runs", settings, 2);
+    auto fresh = launch(dir / "runs", 1, "ok");
+    auto resumed = launch(dir / "runs", 2, "ok");
+    std::ofstream(progress_file(resumed.run_dir)) << R"({"iteration": 40, "longest_iteration_s": 210})";
+    ex.start(fresh);
+    ex.start(resumed);
+    ex.flush();
+    const auto args = lines();
+    ASSERT_EQ(args.size(), 2u);  // two arrays: the leads differ
+    EXPECT_NE(args[0].find("--signal=B:TERM@120 "), std::string::npos) << args[0];
+    const std::string lead = limit_minutes == 60.0 ? "480" : "180";
+    EXPECT_NE(args[1].find("--signal=B:TERM@" + lead + " "), std::string::npos) << args[1];
+    ex.kill_all();
+  }
   setenv("PATH", old_path.c_str(), 1);
 }
 
