@@ -94,13 +94,19 @@ TEST(LocalExecutor, TimeoutKillsTheWholeProcessGroup) {
   EXPECT_TRUE(gone);
 }
 
-// A timeout is SIGTERM first: the worker writes its checkpoint and exits.
-TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
-  const auto root = temp_dir("timeout_term");
-  LocalExecutor ex(kFake);
-  ex.start(launch(root, 8, "checkpoint", 0.5));
+// One job of the fake in `mode` with a timeout, run until it ends.
+JobExit timed_out(const std::string& test, const std::string& mode, double timeout_s, double grace_s) {
+  const auto root = temp_dir(test);
+  LocalExecutor ex(kFake, grace_s);
+  ex.start(launch(root, 1, mode, timeout_s));
   const auto e = wait_for(ex);
   EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  return e;
+}
+
+// A timeout is SIGTERM first: the worker writes its checkpoint and exits.
+TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
+  const auto e = timed_out("timeout_term", "checkpoint", 0.5, kStopGraceSeconds);
   EXPECT_EQ(e.code, 130);  // its own exit: the scheduler releases it (sched/outcome.h)
   EXPECT_TRUE(fs::exists(checkpoint_file(e.run_dir)));
   EXPECT_LT(e.wall_s, 5.0);  // well before the 30 s grace: it ended on SIGTERM
@@ -108,59 +114,49 @@ TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
 
 // ... and SIGKILL after the grace period when SIGTERM is ignored.
 TEST(LocalExecutor, TimeoutEndsAWorkerIgnoringSigtermAfterTheGrace) {
-  const auto root = temp_dir("timeout_kill");
-  LocalExecutor ex(kFake, 0.5);
-  ex.start(launch(root, 9, "stubborn", 0.3));
-  const auto e = wait_for(ex);
-  EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  const auto e = timed_out("timeout_kill", "stubborn", 0.3, 0.5);
   EXPECT_GE(e.wall_s, 0.8);  // timeout + grace
   EXPECT_EQ(e.code, 0);      // SIGKILLed: no exit code of its own
   EXPECT_FALSE(fs::exists(checkpoint_file(e.run_dir)));
 }
 
-TEST(LocalExecutor, ShutdownLetsWorkersCheckpoint) {
-  const auto root = temp_dir("killall_term");
-  LocalExecutor ex(kFake, 5);
-  ex.start(launch(root, 1, "checkpoint"));
-  ex.start(launch(root, 2, "stubborn"));
-  // Only once both shells have installed their traps (a loaded machine may
-  // take its time starting them).
-  for (int k = 0; k < 400 && !(fs::exists(root / "hash1/.trap_ready") && fs::exists(root / "hash2/.trap_ready")); ++k)
-    usleep(25000);
-  ASSERT_TRUE(fs::exists(root / "hash1/.trap_ready") && fs::exists(root / "hash2/.trap_ready"));
-  const auto ids = ex.kill_all();
-  EXPECT_EQ(ids.size(), 2u);
-  EXPECT_TRUE(fs::exists(checkpoint_file(root / "hash1")));
-  EXPECT_FALSE(fs::exists(checkpoint_file(root / "hash2")));
-  EXPECT_EQ(ex.in_flight(), 0u);
-}
-
+// Waits until the fake's shell has installed its SIGTERM trap (a loaded
+// machine may take its time starting it).
 void wait_for_trap(const fs::path& run_dir) {
   for (int k = 0; k < 400 && !fs::exists(run_dir / ".trap_ready"); ++k) usleep(25000);
   ASSERT_TRUE(fs::exists(run_dir / ".trap_ready"));
 }
 
-// A worker whose outer iterations take longer than the base grace gets
-// 1.5 × its longest iteration more (exec/worker_progress.h): the fake needs
-// 1 s after SIGTERM; the base grace is 0.5 s, its progress file says 2 s.
-TEST(LocalExecutor, TheGraceGrowsWithTheWorkersIterationTime) {
-  const auto root = temp_dir("grace");
-  LocalExecutor ex(kFake, 0.5);
-  ex.start(launch(root, 1, "slowcheckpoint"));
-  ex.start(launch(root, 2, "slowcheckpointblind"));
+// Two jobs of the fake, in modes `first` and `second`, stopped by a
+// shutdown once both have installed their traps: which left a checkpoint.
+std::pair<bool, bool> shutdown_checkpoints(const std::string& test, double grace_s, const std::string& first,
+                                           const std::string& second) {
+  const auto root = temp_dir(test);
+  LocalExecutor ex(kFake, grace_s);
+  ex.start(launch(root, 1, first));
+  ex.start(launch(root, 2, second));
   wait_for_trap(root / "hash1");
   wait_for_trap(root / "hash2");
   EXPECT_EQ(ex.kill_all().size(), 2u);
-  EXPECT_TRUE(fs::exists(checkpoint_file(root / "hash1")));   // grace 3.5 s
-  EXPECT_FALSE(fs::exists(checkpoint_file(root / "hash2")));  // grace 0.5 s: killed mid-iteration
+  EXPECT_EQ(ex.in_flight(), 0u);
+  return {fs::exists(checkpoint_file(root / "hash1")), fs::exists(checkpoint_file(root / "hash2"))};
+}
+
+TEST(LocalExecutor, ShutdownLetsWorkersCheckpoint) {
+  EXPECT_EQ(shutdown_checkpoints("killall_term", 5, "checkpoint", "stubborn"), std::make_pair(true, false));
+}
+
+// A worker whose outer iterations take longer than the base grace gets
+// 1.5 × its longest iteration more (exec/worker_progress.h): the fake needs
+// 1 s after SIGTERM; the base grace is 0.5 s, its progress file says 2 s
+// (grace 3.5 s), the blind one has no progress file (grace 0.5 s: killed
+// in mid-iteration).
+TEST(LocalExecutor, TheGraceGrowsWithTheWorkersIterationTime) {
+  EXPECT_EQ(shutdown_checkpoints("grace", 0.5, "slowcheckpoint", "slowcheckpointblind"), std::make_pair(true, false));
 }
 
 TEST(LocalExecutor, ATimeoutsGraceGrowsWithTheWorkersIterationTime) {
-  const auto root = temp_dir("grace_timeout");
-  LocalExecutor ex(kFake, 0.5);
-  ex.start(launch(root, 3, "slowcheckpoint", 2.0));
-  const auto e = wait_for(ex);
-  EXPECT_EQ(e.how, JobExit::How::kTimedOut);
+  const auto e = timed_out("grace_timeout", "slowcheckpoint", 2.0, 0.5);
   EXPECT_EQ(e.code, 130);
   EXPECT_TRUE(fs::exists(checkpoint_file(e.run_dir)));
 }
