@@ -51,7 +51,7 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
     std::vector<CostPoint> points;
     std::vector<double> h;
     for (const GridPoint& g : s.series.grids) {
-      const ExtrapolatedGrid* e = is_converged(g) ? s.extrapolation->grid_at(g.delta_star) : nullptr;
+      const ExtrapolatedGrid* e = s.extrapolated(g);
       if (!e || !e->rde) continue;
       points.push_back({*e->rde * 100.0, grid_cost(g, measure)});
       h.push_back(g.delta_star);
@@ -79,7 +79,8 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
     chart.series.push_back({"faded: dominated grid", {}, {}, {},
                             Marker::circle, false, false, false, 7});
     chart.series.back().faded = true;
-    chart.note = "For a target RDE, the cheapest grid is the lowest front point left of it (table \"What a target costs\").";
+    chart.note = "For a target RDE, the cheapest grid is the lowest front point left of it whose finer grids are "
+                 "all left of it too (table \"What a target costs\").";
   }
   return chart;
 }

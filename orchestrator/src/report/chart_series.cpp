@@ -53,7 +53,7 @@ std::string fit_subtitle(const SeriesSummary& s) {
   // With a mixed fit chosen, p is the rejected power law's (why it was rejected).
   if (e.p) out += (e.method == "power" ? ", p = " : ", power law's p = ") + format_g(*e.p, 3) +
                   (e.method == "power" ? "" : " (rejected)");
-  if (auto q = e.fit_quality()) out += ", σ_{RE}/R_{f} = " + format_g(*q, 2) + (*q < 1 ? " (good fit)" : " (poor fit)");
+  if (auto q = e.fit_quality()) out += ", σ_{RE}/R_{f} = " + format_g(*q, 3) + (*q < 1 ? " (good fit)" : " (poor fit)");
   if (s.insufficient()) out += "; insufficient grids: no uncertainty";
   return out;
 }

@@ -1,19 +1,38 @@
 // Target RDE → cheapest grid → its cost (see cost_table.h).
 #include "report/cost_table.h"
 
+#include <algorithm>
+#include <optional>
 #include <string>
 
 #include "report/text_format.h"
 
 namespace gridfree {
 
+namespace {
+
+// The grid's a-priori RDE, or null when it has none (not converged, or no U).
+std::optional<double> rde_of(const SeriesSummary& s, const GridPoint& g) {
+  const ExtrapolatedGrid* e = s.extrapolated(g);
+  return e ? e->rde : std::nullopt;
+}
+
+// The grid and every finer grid with an RDE meet the target.
+bool meets_down_to_the_finest(const SeriesSummary& s, const GridPoint& g, double target) {
+  return std::all_of(s.series.grids.begin(), s.series.grids.end(), [&](const GridPoint& finer) {
+    if (finer.delta_star > g.delta_star) return true;
+    const auto rde = rde_of(s, finer);
+    return !rde || *rde <= target;
+  });
+}
+
+}  // namespace
+
 const GridPoint* cheapest_grid_for(const SeriesSummary& s, double target) {
   if (!s.extrapolation) return nullptr;
   const GridPoint* best = nullptr;
   for (const GridPoint& g : s.series.grids) {
-    if (!is_converged(g)) continue;
-    const ExtrapolatedGrid* e = s.extrapolation->grid_at(g.delta_star);
-    if (!e || !e->rde || *e->rde > target) continue;
+    if (!rde_of(s, g) || !meets_down_to_the_finest(s, g, target)) continue;
     if (!best || g.cpu_s < best->cpu_s) best = &g;
   }
   return best;
@@ -41,7 +60,7 @@ Table cost_table(const std::vector<SeriesSummary>& series, const std::vector<dou
         row.push_back(number_cell(static_cast<double>(cells) * g->iterations, 3));
         row.push_back(number_cell(g->cpu_s, 3));
         row.push_back(number_cell(g->peak_rss_mb, 3));
-        row.push_back(percent_cell(s.extrapolation->grid_at(g->delta_star)->rde));
+        row.push_back(percent_cell(rde_of(s, *g)));
       }
       t.rows.push_back(std::move(row));
     }

@@ -88,11 +88,13 @@ std::string reading_note(const std::string& section) {
            "are marked ⚠: their f0 may move when grids are added.";
   }
   if (section == "cost.csv") {
-    return "For each target RDE, the cheapest converged grid (least CPU time) whose RDE meets it, with "
-           "its cost in CPU seconds (this machine), in cells × iterations (any machine) and its peak "
-           "memory. RDE is the a-priori error estimate U/|f0| of that grid from the series' "
-           "extrapolation; \"none of the run grids\" means a finer grid is needed. The cheapest grids "
-           "lie on the Pareto front of the \"What a target costs\" charts.";
+    return "For each target RDE, the cheapest converged grid (least CPU time) whose RDE meets it and "
+           "stays within it on every finer grid, with its cost in CPU seconds (this machine), in cells × "
+           "iterations (any machine) and its peak memory. RDE is the a-priori error estimate U/|f0| of "
+           "that grid from the series' extrapolation; \"none of the run grids\" means a finer grid is "
+           "needed. On oscillatory convergence a coarse grid can land near f0 by chance: its small RDE "
+           "does not count while a finer grid misses the target. A series that is not `converged` "
+           "names its grids from an extrapolation that may still move.";
   }
   if (section == "gci.csv") {
     return "The classic three-grid procedure (apparent order by fixed-point iteration, φ_ext and "

@@ -63,8 +63,7 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
   t.columns.push_back(prose_col("reason"));
   for (const auto& s : series) {
     for (const GridPoint& g : s.series.grids) {
-      const ExtrapolatedGrid* e = nullptr;
-      if (s.extrapolation && is_converged(g)) e = s.extrapolation->grid_at(g.delta_star);
+      const ExtrapolatedGrid* e = s.extrapolated(g);
       std::vector<Cell> row;
       row.push_back(text_cell(s.label));
       add_factor_cells(row, s.series);

@@ -32,6 +32,10 @@ std::optional<double> SeriesSummary::relative_error(double f) const {
   return std::abs(f - *f_zero) / std::abs(*f_zero);
 }
 
+const ExtrapolatedGrid* SeriesSummary::extrapolated(const GridPoint& grid) const {
+  return extrapolation && is_converged(grid) ? extrapolation->grid_at(grid.delta_star) : nullptr;
+}
+
 std::string SeriesSummary::note() const {
   std::string out;
   if (insufficient()) {

@@ -40,6 +40,9 @@ struct SeriesSummary {
   std::optional<double> f0() const;   // the chosen extrapolated value, if any
   // |f − f0| / |f0|: the error of one grid value against the extrapolation.
   std::optional<double> relative_error(double f) const;
+  // The extrapolation's entry (U, RDE, fitted value) of a converged grid of
+  // this series; null when the grid did not converge or there is no extrapolation.
+  const ExtrapolatedGrid* extrapolated(const GridPoint& grid) const;
   // "insufficient grids (3 converged, 4 needed); incomplete (2 of 5 pending)", or "".
   std::string note() const;
 };

@@ -149,6 +149,29 @@ TEST(ReportTables, CheapestGridForATargetRde) {
   EXPECT_EQ(t.rows[1][3].exact, "none of the run grids");
 }
 
+// Oscillatory data: A with f(1) moved from 1008 to 1016 has RDE (1.25|f0 −
+// f| + 0.5)/1000 = 0.55, 2.05, 1.55, 2.05 % on h = 0.5, 1, 1.5, 2. Δ* 1.5
+// meets 2 % on its own but Δ* 1 below it does not, so the cheapest grid that
+// keeps 2 % on refinement is 0.5; for 2.1 % every grid keeps it and the
+// cheapest (2) is named.
+TEST(ReportTables, CheapestGridMustKeepTheTargetOnEveryFinerGrid) {
+  StudyReportData d = test::synthetic_study();
+  for (GridPoint& g : d.series[0].grids)
+    if (g.delta_star == 1.0) g.dp_star = 1016.0;
+  const auto s = summarize_series(d, test::fake_extrapolation);
+  auto h_for = [&](double target) {
+    const GridPoint* g = cheapest_grid_for(s[0], target);
+    return g ? g->delta_star : -1.0;
+  };
+  ASSERT_TRUE(s[0].extrapolation);
+  ASSERT_NEAR(*s[0].extrapolation->grid_at(1.0)->rde, 0.0205, 1e-12);
+  ASSERT_NEAR(*s[0].extrapolation->grid_at(1.5)->rde, 0.0155, 1e-12);
+  EXPECT_EQ(h_for(0.02), 0.5);
+  EXPECT_EQ(h_for(0.021), 2.0);
+  EXPECT_EQ(h_for(0.0205), 2.0);  // meets the target exactly on 1 and 2
+  EXPECT_EQ(h_for(0.005), -1.0);
+}
+
 // B's chosen fit is the mixed one: its power law is drawn faded and
 // labelled "rejected", the mixed fit labelled "chosen" at full opacity.
 TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
