@@ -1,5 +1,5 @@
 // The studies shipped in studies/: each one parses and expands without
-// duplicate jobs, and the reduced and single-series studies behind
+// duplicate jobs, and the reduced, part and single-series studies behind
 // docs/REPRODUCTION.md are made of the same job documents as the full
 // studies (equal job hashes), so results run for one are reused by the
 // other from the same database instead of being computed again.
@@ -49,6 +49,8 @@ void expect_jobs_contained(const std::string& part, const std::string& whole, st
 TEST(ShippedStudies, ReducedStudiesAreMadeOfTheFullStudiesJobs) {
   expect_jobs_contained("bursting_bubble_baseline.json", "bursting_bubble_paper.json", 18);
   expect_jobs_contained("bursting_bubble_medium.json", "bursting_bubble_paper.json", 12 * 13);
+  expect_jobs_contained("bursting_bubble_paper_drag.json", "bursting_bubble_paper.json", 3 * 18);
+  expect_jobs_contained("bursting_bubble_paper_fwhm.json", "bursting_bubble_paper.json", 3 * 18);
   expect_jobs_contained("sscp_reduced.json", "sscp_paper.json", 12 * 9);
 }
 
