@@ -51,6 +51,8 @@ TEST(ShippedStudies, ReducedStudiesAreMadeOfTheFullStudiesJobs) {
   expect_jobs_contained("bursting_bubble_medium.json", "bursting_bubble_paper.json", 12 * 13);
   expect_jobs_contained("bursting_bubble_paper_drag.json", "bursting_bubble_paper.json", 3 * 18);
   expect_jobs_contained("bursting_bubble_paper_fwhm.json", "bursting_bubble_paper.json", 3 * 18);
+  expect_jobs_contained("bursting_bubble_paper_schemes.json", "bursting_bubble_paper.json", 2 * 18);
+  expect_jobs_contained("bursting_bubble_paper_configurations.json", "bursting_bubble_paper.json", 3 * 18);
   expect_jobs_contained("sscp_reduced.json", "sscp_paper.json", 12 * 9);
 }
 
