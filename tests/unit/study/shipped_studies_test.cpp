@@ -70,5 +70,31 @@ TEST(ShippedStudies, TheFm18BaselineExtendsTheFm18MediumStudysBaselineSeries) {
   for (const auto& j : baseline.jobs) EXPECT_EQ(j.doc["numerics"]["deposition"]["preset"], "fm18");
 }
 
+// The fm18 SSCP study is sscp_paper's t1 and t2 on its twelve grids with
+// the paper's transfer; the alignment study re-solves t1/BVK on three of
+// those grids with shifted cell counts, and its unshifted grids are the jobs
+// of the two SSCP studies (default transfer and fm18), so only the shifted
+// grids are new.
+std::size_t shared_jobs(const ExpandedStudy& a, const std::set<std::string>& b) {
+  std::size_t n = 0;
+  for (const auto& j : a.jobs) n += b.count(j.hash);
+  return n;
+}
+
+TEST(ShippedStudies, TheSscpAlignmentStudyReusesTheSscpStudiesGrids) {
+  const auto fm18 = expanded("sscp_fm18_t1_t2.json");
+  ASSERT_EQ(fm18.jobs.size(), 4u * 12u);
+  for (const auto& j : fm18.jobs) EXPECT_EQ(j.doc["numerics"]["deposition"]["preset"], "fm18");
+  const auto paper = hashes_of(expanded("sscp_paper.json"));
+  EXPECT_EQ(shared_jobs(fm18, paper), 0u);
+
+  const auto alignment = expanded("sscp_alignment.json");
+  ASSERT_EQ(alignment.series.size(), 2u);
+  EXPECT_EQ(alignment.jobs.size(), 2u * 7u);
+  EXPECT_EQ(alignment.alignment.size(), 2u * 3u * 3u);
+  EXPECT_EQ(shared_jobs(alignment, paper), 7u);
+  EXPECT_EQ(shared_jobs(alignment, hashes_of(fm18)), 7u);
+}
+
 }  // namespace
 }  // namespace gridfree
