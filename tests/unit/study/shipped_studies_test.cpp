@@ -96,5 +96,32 @@ TEST(ShippedStudies, TheSscpAlignmentStudyReusesTheSscpStudiesGrids) {
   EXPECT_EQ(shared_jobs(alignment, hashes_of(fm18)), 7u);
 }
 
+// The six-instance fm18 study is sscp_paper with the paper's transfer: the
+// same cases, factors and grids, each job differing from its sscp_paper
+// counterpart only in numerics.deposition; its t1 and t2 jobs are those of
+// sscp_fm18_t1_t2, so a database holding that study runs only t3..t6.
+TEST(ShippedStudies, TheSixInstanceFm18StudyIsSscpPaperWithThePapersTransfer) {
+  const auto fm18 = expanded("sscp_fm18.json");
+  const auto paper = expanded("sscp_paper.json");
+  ASSERT_EQ(fm18.jobs.size(), 6u * 2u * 12u);
+  ASSERT_EQ(fm18.jobs.size(), paper.jobs.size());
+  const auto ensembles = parse_study((kStudies / "sscp_fm18.json").string()).ensembles;
+  ASSERT_EQ(ensembles.size(), 1u);
+  EXPECT_EQ(ensembles.begin()->second.size(), 6u);
+  auto without_deposition = [](const ExpandedStudy& ex) {
+    std::multiset<std::string> docs;
+    for (const auto& j : ex.jobs) {
+      auto doc = j.doc;
+      doc["numerics"].erase("deposition");
+      docs.insert(doc.dump());
+    }
+    return docs;
+  };
+  EXPECT_EQ(without_deposition(fm18), without_deposition(paper));
+  for (const auto& j : fm18.jobs) EXPECT_EQ(j.doc["numerics"]["deposition"]["preset"], "fm18");
+  EXPECT_EQ(shared_jobs(fm18, hashes_of(paper)), 0u);
+  EXPECT_EQ(shared_jobs(fm18, hashes_of(expanded("sscp_fm18_t1_t2.json"))), 4u * 12u);
+}
+
 }  // namespace
 }  // namespace gridfree
