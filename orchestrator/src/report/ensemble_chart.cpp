@@ -1,7 +1,8 @@
 // The budget chart of one ensemble (see report_ensembles.h): x = Δ*, y = %.
 //   one curve per configuration: ensemble-mean RDE, error bars = its sample sd
-//   dashed lines: each configuration's model-form difference and instance
-//   spread (constant in Δ*: they are differences of extrapolated values)
+//   dashed lines: each configuration's instance spread (its colour) and each
+//   model-form difference (black); constant in Δ*: they are differences of
+//   extrapolated values
 #include "report/report_ensembles.h"
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include "report/text_format.h"
 
 namespace gridfree {
+
+constexpr int kModelFormColour = 6;  // black; configurations take palette 0, 1, ...
 
 Chart ensemble_budget_chart(const std::string& ensemble, const std::vector<EnsembleConfig>& configs,
                             const std::vector<BudgetRow>& rows) {
@@ -41,11 +44,12 @@ Chart ensemble_budget_chart(const std::string& ensemble, const std::vector<Ensem
     }
     if (!s.x.empty()) chart.series.push_back(s);
     if (spread) chart.hlines.push_back({*spread * 100.0, "instance spread s/|mean| " + name, k, true});
-    // A model-form pair is the same line for both of its configurations: drawn once.
+    // A model-form pair is the same line for both of its configurations: drawn
+    // once, in black, so that no configuration's spread line shares its style.
     const std::string model_label = "model form (" + pair + ")";
     const bool drawn = std::any_of(chart.hlines.begin(), chart.hlines.end(),
                                    [&](const ChartHLine& l) { return l.label == model_label; });
-    if (model && !drawn) chart.hlines.push_back({*model * 100.0, model_label, k, true});
+    if (model && !drawn) chart.hlines.push_back({*model * 100.0, model_label, kModelFormColour, true});
     ++k;
   }
   if (chart.series.empty() && chart.hlines.empty())

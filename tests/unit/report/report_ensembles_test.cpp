@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "report/ensemble_budget.h"
@@ -156,6 +157,18 @@ TEST(EnsembleSectionRender, TablesChartAndText) {
   ASSERT_EQ(c.ensembles.charts.size(), 1u);
   EXPECT_EQ(c.ensembles.charts[0].file, "budget_snap.svg");
   EXPECT_EQ(c.ensembles.charts[0].chart.series.size(), 2u);
+  // Every dashed line has its own colour (the legend tells them apart): one
+  // spread line per configuration in its colour, the model form in black.
+  const auto& hl = c.ensembles.charts[0].chart.hlines;
+  ASSERT_EQ(hl.size(), 3u);
+  std::set<int> colours;
+  for (const auto& l : hl) colours.insert(l.colour);
+  EXPECT_EQ(colours.size(), hl.size());
+  for (const auto& l : hl) {
+    if (l.label.rfind("model form", 0) == 0) {
+      EXPECT_EQ(l.colour, 6) << l.label;
+    }
+  }
   const std::string md = ensembles_markdown(c);
   EXPECT_NE(md.find("## Ensembles and uncertainty budget"), std::string::npos);
   EXPECT_NE(md.find("1 of 3 instances not converged"), std::string::npos);
