@@ -101,13 +101,13 @@ TEST(ShippedStudies, TheSscpAlignmentStudyReusesTheSscpStudiesGrids) {
 // counterpart only in numerics.deposition; its t1 and t2 jobs are those of
 // sscp_fm18_t1_t2, so a database holding that study runs only t3..t6.
 TEST(ShippedStudies, TheSixInstanceFm18StudyIsSscpPaperWithThePapersTransfer) {
-  const auto fm18 = expanded("sscp_fm18.json");
+  const Study study = parse_study((kStudies / "sscp_fm18.json").string());
+  const auto fm18 = expand(study);
   const auto paper = expanded("sscp_paper.json");
   ASSERT_EQ(fm18.jobs.size(), 6u * 2u * 12u);
   ASSERT_EQ(fm18.jobs.size(), paper.jobs.size());
-  const auto ensembles = parse_study((kStudies / "sscp_fm18.json").string()).ensembles;
-  ASSERT_EQ(ensembles.size(), 1u);
-  EXPECT_EQ(ensembles.begin()->second.size(), 6u);
+  ASSERT_EQ(study.ensembles.size(), 1u);
+  EXPECT_EQ(study.ensembles.begin()->second.size(), 6u);
   auto without_deposition = [](const ExpandedStudy& ex) {
     std::multiset<std::string> docs;
     for (const auto& j : ex.jobs) {
