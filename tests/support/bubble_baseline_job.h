@@ -35,4 +35,13 @@ inline JobSpec bubble_baseline_job(double delta_star) {
   return job;
 }
 
+// The baseline to the steady tolerance `steady` within 5000 outer
+// iterations, for the tests that compare the fixed points of two solvers.
+inline JobSpec bubble_fixed_point_job(double delta_star, double steady) {
+  JobSpec job = bubble_baseline_job(delta_star);
+  job.numerics.tolerances.steady = steady;
+  job.numerics.max_iterations = 5000;
+  return job;
+}
+
 }  // namespace gridfree::test_support

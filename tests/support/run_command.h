@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +48,13 @@ inline std::string sqlite_query(const std::filesystem::path& db, const std::stri
   auto r = run_command("sqlite3 '" + db.string() + "' \"" + query + "\"", db.parent_path() / "sql.txt");
   while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
   return r.out;
+}
+
+// The integer `query` prints on `db` (sqlite_query); 0 when it prints none
+// (no such table yet, the database busy).
+inline int sqlite_int(const std::filesystem::path& db, const std::string& query) {
+  const auto s = sqlite_query(db, query);
+  return s.empty() || !std::isdigit(static_cast<unsigned char>(s[0])) ? 0 : std::stoi(s);
 }
 
 // The project's executable `name` (in GRIDFREE_BIN_DIR, which every test is

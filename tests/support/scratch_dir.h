@@ -42,4 +42,14 @@ inline std::filesystem::path fresh_scratch_dir(const std::string& tag, const std
   return dir;
 }
 
+// A path for a new SQLite database `name`.sqlite under the scratch root:
+// no file there, nor its -wal and -shm.
+inline std::filesystem::path fresh_db_path(const std::string& tag, const std::string& name) {
+  const auto& dir = scratch_root(tag);
+  std::filesystem::create_directories(dir);
+  const auto db = dir / (name + ".sqlite");
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix);
+  return db;
+}
+
 }  // namespace gridfree::test_support

@@ -19,7 +19,7 @@ std::vector<double> adaptive_ladder(const AdaptiveGrids& a) {
   return out;
 }
 
-std::optional<double> parse_memory_size(const nlohmann::json& v) {
+std::optional<double> parse_memory_field(const nlohmann::json& v) {
   if (v.is_number() && !v.is_boolean()) {
     const double b = v.get<double>();
     return b > 0 && std::isfinite(b) ? std::optional<double>(b) : std::nullopt;
@@ -82,7 +82,7 @@ std::optional<AdaptiveGrids> parse_adaptive_grids(const nlohmann::json& g, Probl
   if (coarsest && finest && *finest >= *coarsest)
     problems.add("/grids/finest_delta_star", "must be smaller than coarsest_delta_star");
   if (auto m = g.find("max_memory"); m != g.end()) {
-    a.max_memory_bytes = parse_memory_size(*m);
+    a.max_memory_bytes = parse_memory_field(*m);
     if (!a.max_memory_bytes)
       problems.add("/grids/max_memory", "must be a size such as \"8 GiB\", \"500 MiB\", \"2 GB\" or a number of bytes");
   }

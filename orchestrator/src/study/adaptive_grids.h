@@ -52,6 +52,6 @@ std::optional<AdaptiveGrids> adaptive_grids_of(const nlohmann::json& definition)
 
 // "12 GiB", "500 MiB", "2.5 GB", or a number of bytes → bytes; nullopt if
 // not understood.
-std::optional<double> parse_memory_size(const nlohmann::json& value);
+std::optional<double> parse_memory_field(const nlohmann::json& value);
 
 }  // namespace gridfree

@@ -7,16 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "core/json_fields.h"
+
 namespace gridfree {
 namespace {
 
 using nlohmann::json;
-
-std::string pointer_token(const std::string& key) {
-  std::string out;
-  for (char c : key) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
-  return out;
-}
 
 class Resolver {
  public:
@@ -28,7 +24,7 @@ class Resolver {
     if (std::find(chain_.begin(), chain_.end(), name) != chain_.end()) {
       std::string cycle;
       for (const auto& n : chain_) cycle += n + " -> ";
-      problems_.add("/cases/" + pointer_token(chain_.back()) + "/extends", "cycle: " + cycle + name);
+      problems_.add(child_pointer("/cases", chain_.back()) + "/extends", "cycle: " + cycle + name);
       return nullptr;
     }
     const json& c = cases_.at(name);
@@ -36,7 +32,7 @@ class Resolver {
     own.erase("extends");
     if (!c.contains("extends")) return done_[name] = own;
 
-    const std::string at = "/cases/" + pointer_token(name) + "/extends";
+    const std::string at = child_pointer("/cases", name) + "/extends";
     const json& base = c["extends"];
     json out = nullptr;
     if (!base.is_string()) {

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/input_error.h"
+#include "core/json_fields.h"
 #include "core/schema_validation.h"
 #include "drag/drag_law.h"
 #include "grid/grid.h"
@@ -22,28 +23,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string pointer_token(const std::string& key) {
-  std::string out;
-  for (char c : key) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
-  }
-  return out;
-}
-
-bool has_problem_at(const ProblemList& problems, const std::string& where) {
-  return std::any_of(problems.problems().begin(), problems.problems().end(),
-                     [&](const Problem& p) { return p.where == where; });
-}
-
-// Adds a problem unless one was already reported at the same place.
-void add_once(ProblemList& problems, const std::string& where, std::string reason) {
-  if (!has_problem_at(problems, where)) problems.add(where, std::move(reason));
-}
 
 bool is_number(const json& j) { return j.is_number() && !j.is_boolean(); }
 
@@ -53,9 +32,9 @@ void check_case_physics(const json& c, const std::string& at, const std::filesys
   if (!c.is_object()) return;
   if (auto g = c.find("gas"); g != c.end() && g->is_object()) {
     if (auto mu = g->find("viscosity_g_cm_s"); mu != g->end() && is_number(*mu) && mu->get<double>() <= 0)
-      add_once(problems, at + "/gas/viscosity_g_cm_s", "gas viscosity must be positive");
+      problems.add_once(at + "/gas/viscosity_g_cm_s", "gas viscosity must be positive");
     if (auto rho = g->find("density_g_cm3"); rho != g->end() && is_number(*rho) && rho->get<double>() <= 0)
-      add_once(problems, at + "/gas/density_g_cm3", "gas density must be positive");
+      problems.add_once(at + "/gas/density_g_cm3", "gas density must be positive");
   }
   if (auto b = c.find("boundaries"); b != c.end() && b->is_object()) {
     for (const char* side : {"y_low", "y_high"}) {
@@ -63,7 +42,7 @@ void check_case_physics(const json& c, const std::string& at, const std::filesys
       if (s == b->end() || !s->is_object()) continue;
       auto u = s->find("superficial_velocity_cm_s");
       if (u != s->end() && is_number(*u) && u->get<double>() < 0)
-        add_once(problems, at + "/boundaries/" + side + "/superficial_velocity_cm_s",
+        problems.add_once(at + "/boundaries/" + side + "/superficial_velocity_cm_s",
                  "inflow velocity must not be negative");
     }
   }
@@ -72,7 +51,7 @@ void check_case_physics(const json& c, const std::string& at, const std::filesys
     for (std::size_t a = 0; a < d->size(); ++a) {
       const auto& v = (*d)[a];
       if (is_number(v) && v.get<double>() <= 0)
-        add_once(problems, at + "/domain_dp/" + std::to_string(a), "domain size must be positive");
+        problems.add_once(at + "/domain_dp/" + std::to_string(a), "domain size must be positive");
     }
     if (d->size() == 3 && is_number((*d)[1])) ly = (*d)[1].get<double>();
   }
@@ -83,7 +62,7 @@ void check_case_physics(const json& c, const std::string& at, const std::filesys
         if (y == dp->end() || !is_number(*y)) continue;
         const double v = y->get<double>();
         if (v <= 0 || v >= ly)
-          add_once(problems, at + "/probes/pressure_drop/" + key,
+          problems.add_once(at + "/probes/pressure_drop/" + key,
                    "probe at y* = " + y->dump() + " is outside the domain (0, " + json(ly).dump() + ")");
       }
     }
@@ -94,7 +73,7 @@ void check_case_physics(const json& c, const std::string& at, const std::filesys
       if (path.is_relative()) path = base_dir / path;
       std::error_code ec;
       if (!std::filesystem::is_regular_file(path, ec))
-        add_once(problems, at + "/particles/file", "particle file '" + f->get<std::string>() + "' not found");
+        problems.add_once(at + "/particles/file", "particle file '" + f->get<std::string>() + "' not found");
     }
   }
 }
@@ -102,18 +81,18 @@ void check_case_physics(const json& c, const std::string& at, const std::filesys
 std::vector<std::string> string_levels(const json& f, const std::string& at, ProblemList& problems) {
   std::vector<std::string> out;
   if (!f.is_array()) {
-    add_once(problems, at, "must be an array of names");
+    problems.add_once(at, "must be an array of names");
     return out;
   }
-  if (f.empty()) add_once(problems, at, "a factor needs at least one level");
+  if (f.empty()) problems.add_once(at, "a factor needs at least one level");
   for (std::size_t i = 0; i < f.size(); ++i) {
     if (!f[i].is_string()) {
-      add_once(problems, at + "/" + std::to_string(i), "must be a string");
+      problems.add_once(at + "/" + std::to_string(i), "must be a string");
       continue;
     }
     auto name = f[i].get<std::string>();
     if (std::find(out.begin(), out.end(), name) != out.end())
-      add_once(problems, at + "/" + std::to_string(i), "level '" + name + "' is listed twice");
+      problems.add_once(at + "/" + std::to_string(i), "level '" + name + "' is listed twice");
     out.push_back(name);
   }
   return out;
@@ -123,7 +102,7 @@ void check_names(const std::vector<std::string>& levels, const std::string& at, 
                  bool (*known)(const std::string&), const std::string& valid) {
   for (std::size_t i = 0; i < levels.size(); ++i)
     if (!known(levels[i]))
-      add_once(problems, at + "/" + std::to_string(i), "unknown '" + levels[i] + "'; valid: " + valid);
+      problems.add_once(at + "/" + std::to_string(i), "unknown '" + levels[i] + "'; valid: " + valid);
 }
 
 bool known_convection(const std::string& n) { return limiter_from_name(n).has_value(); }
@@ -133,11 +112,11 @@ void parse_factors(const json& doc, Study& s, ProblemList& problems) {
   auto f = doc.find("factors");
   if (f == doc.end()) return;
   if (!f->is_object()) {
-    add_once(problems, "/factors", "must be an object");
+    problems.add_once("/factors", "must be an object");
     return;
   }
   for (auto it = f->begin(); it != f->end(); ++it) {
-    const std::string at = "/factors/" + pointer_token(it.key());
+    const std::string at = child_pointer("/factors", it.key());
     if (it.key() == "convection") {
       s.factors.convection = string_levels(*it, at, problems);
       check_names(s.factors.convection, at, problems, known_convection, limiter_names());
@@ -148,23 +127,23 @@ void parse_factors(const json& doc, Study& s, ProblemList& problems) {
       parse_deposition_levels(*it, at, s, problems);  // names or transfer objects (study_transfer.cpp)
     } else if (it.key() == "fwhm_dp") {
       if (!it->is_array()) {
-        add_once(problems, at, "must be an array of numbers");
+        problems.add_once(at, "must be an array of numbers");
         continue;
       }
-      if (it->empty()) add_once(problems, at, "a factor needs at least one level");
+      if (it->empty()) problems.add_once(at, "a factor needs at least one level");
       for (std::size_t i = 0; i < it->size(); ++i) {
         const auto& v = (*it)[i];
         if (!is_number(v) || v.get<double>() <= 0) {
-          add_once(problems, at + "/" + std::to_string(i), "filter width must be a positive number");
+          problems.add_once(at + "/" + std::to_string(i), "filter width must be a positive number");
           continue;
         }
         const double w = v.get<double>();
         if (std::find(s.factors.fwhm_dp.begin(), s.factors.fwhm_dp.end(), w) != s.factors.fwhm_dp.end())
-          add_once(problems, at + "/" + std::to_string(i), "level listed twice");
+          problems.add_once(at + "/" + std::to_string(i), "level listed twice");
         s.factors.fwhm_dp.push_back(w);
       }
     } else {
-      add_once(problems, at, "unknown factor; valid: convection, fwhm_dp, drag, deposition");
+      problems.add_once(at, "unknown factor; valid: convection, fwhm_dp, drag, deposition");
     }
   }
 }
@@ -187,7 +166,7 @@ void parse_design(const json& doc, Study& s, ProblemList& problems) {
   auto d = doc.find("design");
   if (d == doc.end() || (d->is_string() && *d == "factorial")) return;
   if (!d->is_object() || !d->contains("one_at_a_time") || !(*d)["one_at_a_time"].is_object()) {
-    add_once(problems, "/design", "must be \"factorial\" or {\"one_at_a_time\": {baseline}}");
+    problems.add_once("/design", "must be \"factorial\" or {\"one_at_a_time\": {baseline}}");
     return;
   }
   const json& b = (*d)["one_at_a_time"];
@@ -199,35 +178,35 @@ void parse_design(const json& doc, Study& s, ProblemList& problems) {
   key.deposition = s.factors.deposition.front();
   key.fwhm_dp = s.factors.fwhm_dp.front();
   for (auto it = b.begin(); it != b.end(); ++it) {
-    const std::string where = at + "/" + pointer_token(it.key());
+    const std::string where = child_pointer(at, it.key());
     const std::string& k = it.key();
     if (k == "fwhm_dp") {
       if (!is_number(*it)) {
-        add_once(problems, where, "must be a number");
+        problems.add_once(where, "must be a number");
         continue;
       }
       key.fwhm_dp = it->get<double>();
       if (!contains(s.factors.fwhm_dp, key.fwhm_dp))
-        add_once(problems, where, "baseline fwhm_dp " + it->dump() + " is not a level of /factors/fwhm_dp");
+        problems.add_once(where, "baseline fwhm_dp " + it->dump() + " is not a level of /factors/fwhm_dp");
       continue;
     }
     if (!it->is_string()) {
-      add_once(problems, where, "must be a string");
+      problems.add_once(where, "must be a string");
       continue;
     }
     const std::string v = it->get<std::string>();
     if (k == "case") {
       key.case_name = v;
-      if (s.find_case(v) == nullptr) add_once(problems, where, "unknown case '" + v + "' (not in /cases)");
+      if (s.find_case(v) == nullptr) problems.add_once(where, "unknown case '" + v + "' (not in /cases)");
     } else if (k == "convection" || k == "drag" || k == "deposition") {
       const auto& levels = k == "convection" ? s.factors.convection
                            : k == "drag"     ? s.factors.drag
                                              : s.factors.deposition;
       (k == "convection" ? key.convection : k == "drag" ? key.drag : key.deposition) = v;
       if (!contains(levels, v))
-        add_once(problems, where, "baseline " + k + " '" + v + "' is not a level of /factors/" + k);
+        problems.add_once(where, "baseline " + k + " '" + v + "' is not a level of /factors/" + k);
     } else {
-      add_once(problems, where, "unknown baseline field; valid: case, convection, fwhm_dp, drag, deposition");
+      problems.add_once(where, "unknown baseline field; valid: case, convection, fwhm_dp, drag, deposition");
     }
   }
   s.baseline = key;
@@ -236,7 +215,7 @@ void parse_design(const json& doc, Study& s, ProblemList& problems) {
 void parse_grids(const json& doc, Study& s, ProblemList& problems) {
   auto g = doc.find("grids");
   if (g == doc.end() || !g->is_object()) {
-    add_once(problems, "/grids", "required: {\"delta_star\": [...]} or {\"cells\": [[nx,ny,nz], ...]}");
+    problems.add_once("/grids", "required: {\"delta_star\": [...]} or {\"cells\": [[nx,ny,nz], ...]}");
     return;
   }
   if (g->contains("target_rde")) {  // adaptive series (study/adaptive_grids.h)
@@ -245,18 +224,18 @@ void parse_grids(const json& doc, Study& s, ProblemList& problems) {
   }
   const bool ds = g->contains("delta_star"), cs = g->contains("cells");
   if (ds == cs) {
-    add_once(problems, "/grids", "give exactly one of delta_star and cells");
+    problems.add_once("/grids", "give exactly one of delta_star and cells");
     return;
   }
   if (ds) {
     const json& a = (*g)["delta_star"];
     if (!a.is_array() || a.empty()) {
-      add_once(problems, "/grids/delta_star", "must be a non-empty array of positive numbers");
+      problems.add_once("/grids/delta_star", "must be a non-empty array of positive numbers");
       return;
     }
     for (std::size_t i = 0; i < a.size(); ++i) {
       if (!is_number(a[i]) || !(a[i].get<double>() > 0) || !std::isfinite(a[i].get<double>())) {
-        add_once(problems, "/grids/delta_star/" + std::to_string(i), "cell size Δ* must be a positive number");
+        problems.add_once("/grids/delta_star/" + std::to_string(i), "cell size Δ* must be a positive number");
         continue;
       }
       s.grid_delta_star.push_back(a[i].get<double>());
@@ -265,13 +244,13 @@ void parse_grids(const json& doc, Study& s, ProblemList& problems) {
   }
   const json& a = (*g)["cells"];
   if (!a.is_array() || a.empty()) {
-    add_once(problems, "/grids/cells", "must be a non-empty array of [nx, ny, nz]");
+    problems.add_once("/grids/cells", "must be a non-empty array of [nx, ny, nz]");
     return;
   }
   for (std::size_t i = 0; i < a.size(); ++i) {
     const std::string at = "/grids/cells/" + std::to_string(i);
     if (!a[i].is_array() || a[i].size() != 3) {
-      add_once(problems, at, "must be [nx, ny, nz]");
+      problems.add_once(at, "must be [nx, ny, nz]");
       continue;
     }
     std::array<int, 3> c{};
@@ -279,7 +258,7 @@ void parse_grids(const json& doc, Study& s, ProblemList& problems) {
     for (int k = 0; k < 3; ++k) {
       const json& v = a[i][k];
       if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000) {
-        add_once(problems, at + "/" + std::to_string(k), "cells must be an integer ≥ 1");
+        problems.add_once(at + "/" + std::to_string(k), "cells must be an integer ≥ 1");
         ok = false;
         continue;
       }
@@ -293,25 +272,25 @@ void parse_extrapolation(const json& doc, Study& s, ProblemList& problems) {
   auto e = doc.find("extrapolation");
   if (e == doc.end()) return;
   if (!e->is_object()) {
-    add_once(problems, "/extrapolation", "must be an object");
+    problems.add_once("/extrapolation", "must be an object");
     return;
   }
   if (auto w = e->find("weights"); w != e->end()) {
     if (!w->is_string() || (*w != "inverse_h" && *w != "uniform"))
-      add_once(problems, "/extrapolation/weights", "must be \"inverse_h\" or \"uniform\"");
+      problems.add_once("/extrapolation/weights", "must be \"inverse_h\" or \"uniform\"");
     else
       s.extrapolation.weights = w->get<std::string>();
   }
   if (auto m = e->find("method"); m != e->end()) {
     if (!m->is_string() || (*m != "fm" && *m != "eh14"))
-      add_once(problems, "/extrapolation/method", "must be \"fm\" or \"eh14\"");
+      problems.add_once("/extrapolation/method", "must be \"fm\" or \"eh14\"");
     else
       s.extrapolation.method = m->get<std::string>();
   }
   if (auto p = e->find("p_range"); p != e->end()) {
     if (!p->is_array() || p->size() != 2 || !is_number((*p)[0]) || !is_number((*p)[1]) ||
         !((*p)[0].get<double>() < (*p)[1].get<double>()))
-      add_once(problems, "/extrapolation/p_range", "must be [low, high] with low < high");
+      problems.add_once("/extrapolation/p_range", "must be [low, high] with low < high");
     else {
       s.extrapolation.p_low = (*p)[0].get<double>();
       s.extrapolation.p_high = (*p)[1].get<double>();
@@ -322,13 +301,13 @@ void parse_extrapolation(const json& doc, Study& s, ProblemList& problems) {
 void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& s, ProblemList& problems) {
   auto cs = doc.find("cases");
   if (cs == doc.end() || !cs->is_object() || cs->empty()) {
-    add_once(problems, "/cases", "at least one case is required");
+    problems.add_once("/cases", "at least one case is required");
     return;
   }
   for (auto it = cs->begin(); it != cs->end(); ++it) {
-    const std::string at = "/cases/" + pointer_token(it.key());
+    const std::string at = child_pointer("/cases", it.key());
     if (!it->is_object()) {
-      add_once(problems, at, "a case must be an object");
+      problems.add_once(at, "a case must be an object");
       continue;
     }
     StudyCase c;
@@ -342,7 +321,7 @@ void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& 
       case_problems.append(e.problems());
     }
     check_case_physics(c.doc, at, base_dir, case_problems);
-    for (const auto& p : case_problems.problems()) add_once(problems, p.where, p.reason);
+    for (const auto& p : case_problems.problems()) problems.add_once(p.where, p.reason);
     // The job is run from another folder: particle files become absolute.
     if (c.doc.contains("particles") && c.doc["particles"].is_object() &&
         c.doc["particles"].contains("file") && c.doc["particles"]["file"].is_string()) {
@@ -362,17 +341,17 @@ void check_grids(const Study& s, ProblemList& problems) {
     for (std::size_t i = 0; i < grids.size(); ++i) {
       for (std::size_t j = 0; j < i; ++j)
         if (grids[i] == grids[j])
-          add_once(problems, list + std::to_string(i),
+          problems.add_once(list + std::to_string(i),
                    "gives the same cells as " + list + std::to_string(j) + " for case " + c.name);
       if (std::any_of(grids[i].begin(), grids[i].end(), [](int n) { return n > kMaxCellsPerAxis; })) {
-        add_once(problems, list + std::to_string(i),
+        problems.add_once(list + std::to_string(i),
                  "gives more than " + std::to_string(kMaxCellsPerAxis) + " cells along one direction for case " +
                      c.name + " (docs/LIMITS.md)");
         continue;
       }
       const double mem = estimated_memory_bytes(grids[i]);
       if (machine > 0 && mem > machine && !s.adaptive_grids)  // adaptive: a cap, not an error
-        add_once(problems, list + std::to_string(i),
+        problems.add_once(list + std::to_string(i),
                  "estimated memory " + human_bytes(mem) + " exceeds this machine's " + human_bytes(machine));
     }
   }
@@ -391,8 +370,8 @@ void check_jobs(const Study& s, ProblemList& problems) {
     } catch (const InputError& e) {
       for (const auto& p : e.problems()) {
         std::string where = p.where;
-        if (where.rfind("/case", 0) == 0) where = "/cases/" + pointer_token(c->name) + where.substr(5);
-        add_once(problems, where, p.reason + " (series " + key.label() + ")");
+        if (where.rfind("/case", 0) == 0) where = child_pointer("/cases", c->name) + where.substr(5);
+        problems.add_once(where, p.reason + " (series " + key.label() + ")");
       }
     }
   }
@@ -411,20 +390,20 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   s.definition = given;
   s.base_dir = base_dir;
   if (auto n = doc.find("name"); n == doc.end() || !n->is_string() || n->get<std::string>().empty()) {
-    add_once(problems, "/name", "a non-empty study name is required");
+    problems.add_once("/name", "a non-empty study name is required");
   } else {
     s.name = n->get<std::string>();
     const bool safe = std::all_of(s.name.begin(), s.name.end(), [](char ch) {
       return std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_' || ch == '.';
     });
     if (!safe || s.name.front() == '.')
-      add_once(problems, "/name", "use letters, digits, '-', '_' and '.' only (it names the report folder)");
+      problems.add_once("/name", "use letters, digits, '-', '_' and '.' only (it names the report folder)");
   }
   if (auto n = doc.find("numerics"); n != doc.end()) {
     if (n->is_object())
       s.numerics = *n;
     else
-      add_once(problems, "/numerics", "must be an object");
+      problems.add_once("/numerics", "must be an object");
   }
   parse_cases(doc, base_dir, s, problems);
   parse_factors(doc, s, problems);

@@ -27,7 +27,7 @@ bool is_named_level(const std::string& n) {
   return std::any_of(kNamedLevels.begin(), kNamedLevels.end(), [&](const char* k) { return n == k; });
 }
 
-bool safe_name(const std::string& n) {
+bool safe_level_name(const std::string& n) {
   return !n.empty() && n.size() <= 40 && std::all_of(n.begin(), n.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' || c == '+' ||
            c == '=' || c == ',';
@@ -74,7 +74,7 @@ void parse_deposition_levels(const json& f, const std::string& at, Study& s, Pro
       if (auto n = level.find("name"); n != level.end()) {
         name = n->is_string() ? n->get<std::string>() : "";
         level.erase("name");
-        if (!safe_name(name)) {
+        if (!safe_level_name(name)) {
           problems.add(where + "/name", "use up to 40 letters, digits and - _ . + = , (it names the series)");
           continue;
         }

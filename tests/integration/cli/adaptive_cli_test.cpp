@@ -9,48 +9,34 @@
 // a-priori without a database and fitted to the finished series with one.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <sstream>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
+#include "fake_worker.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
-
-extern char** environ;
+#include "wait_until.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
-const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
-
-gridfree::test_support::CommandRun gridfree_in(const fs::path& dir, const std::string& args) {
-  return gridfree::test_support::run_command(
-      "cd '" + dir.string() + "' && GRIDFREE_WORKER='" + kFake.string() + "' '" + kGridfree.string() + "' " + args,
-      dir / "stderr.txt");
-}
-
-std::string sql(const fs::path& db, const std::string& query) {
-  auto r = gridfree::test_support::run_command("sqlite3 '" + db.string() + "' \"" + query + "\"",
-                                               db.parent_path() / "sql.txt");
-  while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
-  return r.out;
-}
+using gridfree::test_support::gridfree_in;
+using gridfree::test_support::quickstart_document;
+using gridfree::test_support::spawn_gridfree_in;
+using gridfree::test_support::sqlite_int;
+using gridfree::test_support::sqlite_query;
+using gridfree::test_support::wait_until;
 
 // One series ("ok": the fake worker converges) with the given grids.
-fs::path write_study(const fs::path& dir, const std::string& name, const nlohmann::json& grids) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+fs::path write_series_study(const fs::path& dir, const std::string& name, const nlohmann::json& grids) {
+  auto doc = quickstart_document();
   doc["name"] = name;
   doc["cases"] = {{"ok", doc["cases"]["PC1"]}};
   doc.erase("factors");
@@ -75,60 +61,36 @@ std::vector<double> whole_ladder() {
   return out;
 }
 
-bool wait_until(const std::function<bool()>& done, double limit_s) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit_s);
-  while (std::chrono::steady_clock::now() < until) {
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  return done();
-}
-
-pid_t spawn(const fs::path& dir, const std::string& args, const std::string& sleep_s) {
-  std::string cmd = "cd '" + dir.string() + "' && GRIDFREE_WORKER='" + kFake.string() + "' GRIDFREE_FAKE_SLEEP=" +
-                    sleep_s + " exec '" + kGridfree.string() + "' " + args + " >spawned.log 2>&1";
-  std::vector<std::string> words = {"/bin/sh", "-c", cmd};
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ);
-  return pid;
-}
-
-int count(const fs::path& db, const std::string& query) {
-  const auto s = sql(db, query);
-  return s.empty() || !std::isdigit(static_cast<unsigned char>(s[0])) ? 0 : std::stoi(s);
-}
-
 TEST(AdaptiveCli, StopsAtTheFirstGridMeetingTheTargetWithTheFixedSeriesF0) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_cli_test", "stop");
-  write_study(dir, "adaptive", adaptive_grids());
-  write_study(dir, "fixed", {{"delta_star", whole_ladder()}});
+  write_series_study(dir, "adaptive", adaptive_grids());
+  write_series_study(dir, "fixed", {{"delta_star", whole_ladder()}});
   auto r = gridfree_in(dir, "run adaptive.json -j 2 --db a.sqlite");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = gridfree_in(dir, "run fixed.json -j 2 --db f.sqlite");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto a = dir / "a.sqlite", f = dir / "f.sqlite";
 
-  EXPECT_EQ(sql(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged");
+  EXPECT_EQ(sqlite_query(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged");
   // The stop is at the first grid meeting the target: every grid before the
   // finest was checked and missed it (the RDE logged with each refining).
-  const int grids = count(a, "SELECT COUNT(*) FROM study_jobs");
+  const int grids = sqlite_int(a, "SELECT COUNT(*) FROM study_jobs");
   EXPECT_GT(grids, 4);
   EXPECT_LT(grids, 9);
-  EXPECT_EQ(count(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive' AND message LIKE '%stopped at%'"), 1);
-  EXPECT_EQ(count(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive'"), grids - 4 + 1);
-  EXPECT_EQ(count(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive' AND message LIKE '%RDE%> 0.1 %%'"),
+  EXPECT_EQ(sqlite_int(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive' AND message LIKE '%stopped at%'"), 1);
+  EXPECT_EQ(sqlite_int(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive'"), grids - 4 + 1);
+  EXPECT_EQ(sqlite_int(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive' AND message LIKE '%RDE%> 0.1 %%'"),
             grids - 4 - 1);  // the first decision after 4 grids had no converged verdict yet (exact data)
-  EXPECT_EQ(sql(a, "SELECT finest_rde <= 0.001 FROM v_series"), "1");
+  EXPECT_EQ(sqlite_query(a, "SELECT finest_rde <= 0.001 FROM v_series"), "1");
   // Same f0 within its U (the fake's exact f0 is 1159).
-  const double f0_a = std::stod(sql(a, "SELECT f0 FROM v_series")), u_a = std::stod(sql(a, "SELECT finest_u FROM v_series"));
-  const double f0_f = std::stod(sql(f, "SELECT f0 FROM v_series")), u_f = std::stod(sql(f, "SELECT finest_u FROM v_series"));
+  const double f0_a = std::stod(sqlite_query(a, "SELECT f0 FROM v_series")),
+               u_a = std::stod(sqlite_query(a, "SELECT finest_u FROM v_series"));
+  const double f0_f = std::stod(sqlite_query(f, "SELECT f0 FROM v_series")),
+               u_f = std::stod(sqlite_query(f, "SELECT finest_u FROM v_series"));
   EXPECT_LE(std::abs(f0_a - f0_f), std::max(u_a, u_f));
   EXPECT_NEAR(f0_a, 1159, u_a);
   // The saving is reported: in the stop note, the event and the report.
-  EXPECT_NE(sql(a, "SELECT adaptive_note FROM series").find("saved an estimated"), std::string::npos);
+  EXPECT_NE(sqlite_query(a, "SELECT adaptive_note FROM series").find("saved an estimated"), std::string::npos);
   std::ifstream md(dir / "reports/adaptive/report.md");
   std::stringstream text;
   text << md.rdbuf();
@@ -138,50 +100,51 @@ TEST(AdaptiveCli, StopsAtTheFirstGridMeetingTheTargetWithTheFixedSeriesF0) {
   // A rerun decides nothing again.
   r = gridfree_in(dir, "run adaptive.json -j 2 --db a.sqlite");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(count(a, "SELECT COUNT(*) FROM study_jobs"), grids);
-  EXPECT_EQ(count(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive'"), grids - 4 + 1);
+  EXPECT_EQ(sqlite_int(a, "SELECT COUNT(*) FROM study_jobs"), grids);
+  EXPECT_EQ(sqlite_int(a, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive'"), grids - 4 + 1);
 }
 
 TEST(AdaptiveCli, AKilledRunResumedByTheDaemonMakesTheSameDecisions) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_cli_test", "kill");
-  write_study(dir, "adaptive", adaptive_grids());
+  write_series_study(dir, "adaptive", adaptive_grids());
   ASSERT_EQ(gridfree_in(dir, "run adaptive.json -j 2 --db once.sqlite").exit_code, 0);
   const auto once = dir / "once.sqlite", db = dir / "g.sqlite";
   // Killed (-9) once the first refinement was decided; the daemon resumes.
-  pid_t pid = spawn(dir, "run adaptive.json -j 2 --db g.sqlite", "0.3");
-  ASSERT_TRUE(wait_until([&] { return count(db, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive'") >= 1; }, 60));
+  pid_t pid = spawn_gridfree_in(dir, "run adaptive.json -j 2 --db g.sqlite", "0.3");
+  ASSERT_TRUE(
+      wait_until([&] { return sqlite_int(db, "SELECT COUNT(*) FROM events WHERE kind = 'adaptive'") >= 1; }, 60));
   kill(pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
-  pid = spawn(dir, "daemon -j 2 --db g.sqlite", "0.05");
-  ASSERT_TRUE(wait_until([&] { return sql(db, "SELECT status FROM studies") == "done"; }, 120));
+  pid = spawn_gridfree_in(dir, "daemon -j 2 --db g.sqlite", "0.05");
+  ASSERT_TRUE(wait_until([&] { return sqlite_query(db, "SELECT status FROM studies") == "done"; }, 120));
   kill(pid, SIGTERM);
   waitpid(pid, &status, 0);
   const std::string decisions = "SELECT message FROM events WHERE kind = 'adaptive' ORDER BY id";
-  EXPECT_EQ(sql(db, decisions), sql(once, decisions));
-  EXPECT_EQ(sql(db, "SELECT COUNT(*), COUNT(DISTINCT grid_index) FROM study_jobs"),
-            sql(once, "SELECT COUNT(*), COUNT(DISTINCT grid_index) FROM study_jobs"));
-  EXPECT_EQ(sql(db, "SELECT COUNT(*) = COUNT(DISTINCT job_id) FROM results"), "1");
-  EXPECT_EQ(sql(db, "PRAGMA integrity_check"), "ok");
+  EXPECT_EQ(sqlite_query(db, decisions), sqlite_query(once, decisions));
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*), COUNT(DISTINCT grid_index) FROM study_jobs"),
+            sqlite_query(once, "SELECT COUNT(*), COUNT(DISTINCT grid_index) FROM study_jobs"));
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) = COUNT(DISTINCT job_id) FROM results"), "1");
+  EXPECT_EQ(sqlite_query(db, "PRAGMA integrity_check"), "ok");
 }
 
 TEST(AdaptiveCli, AMemoryCapEndsTheSeriesTargetNotReached) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_cli_test", "cap");
   // The cap between the estimated memory of the fourth and the fifth rung,
   // as `plan` reports them (the memory model is the worker's).
-  write_study(dir, "capped", adaptive_grids({{"target_rde", 0.0001}}));
+  write_series_study(dir, "capped", adaptive_grids({{"target_rde", 0.0001}}));
   const auto p = gridfree_in(dir, "plan capped.json --json");
   ASSERT_EQ(p.exit_code, 0) << p.err;
   const auto grids = nlohmann::json::parse(p.out)["target"]["cases"][0]["grids"];
   const double fourth = grids[3]["memory_bytes"].get<double>(), fifth = grids[4]["memory_bytes"].get<double>();
   ASSERT_LT(fourth, fifth);
   const double cap = std::floor((fourth + fifth) / 2);
-  write_study(dir, "capped", adaptive_grids({{"target_rde", 0.0001}, {"max_memory", cap}}));
+  write_series_study(dir, "capped", adaptive_grids({{"target_rde", 0.0001}, {"max_memory", cap}}));
   ASSERT_EQ(gridfree_in(dir, "run capped.json -j 2 --db g.sqlite").exit_code, 0);
   const auto db = dir / "g.sqlite";
-  EXPECT_EQ(sql(db, "SELECT adaptive_status FROM series"), "target_not_reached");
-  EXPECT_EQ(count(db, "SELECT COUNT(*) FROM study_jobs"), 4);
-  const std::string note = sql(db, "SELECT adaptive_note FROM series");
+  EXPECT_EQ(sqlite_query(db, "SELECT adaptive_status FROM series"), "target_not_reached");
+  EXPECT_EQ(sqlite_int(db, "SELECT COUNT(*) FROM study_jobs"), 4);
+  const std::string note = sqlite_query(db, "SELECT adaptive_note FROM series");
   EXPECT_NE(note.find("target not reached"), std::string::npos) << note;
   EXPECT_NE(note.find("> max_memory"), std::string::npos) << note;
   EXPECT_NE(note.find("best: Δ*"), std::string::npos) << note;
@@ -189,7 +152,7 @@ TEST(AdaptiveCli, AMemoryCapEndsTheSeriesTargetNotReached) {
 
 TEST(AdaptiveCli, BadAdaptiveFieldsAreRefusedWithTheirPath) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_cli_test", "bad");
-  write_study(dir, "bad", adaptive_grids({{"ratio", 1.01}, {"max_memory", "much"}}));
+  write_series_study(dir, "bad", adaptive_grids({{"ratio", 1.01}, {"max_memory", "much"}}));
   const auto r = gridfree_in(dir, "run bad.json --db g.sqlite");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("/grids/ratio"), std::string::npos) << r.err;
@@ -199,8 +162,8 @@ TEST(AdaptiveCli, BadAdaptiveFieldsAreRefusedWithTheirPath) {
 
 TEST(AdaptiveCli, ValidateJudgesTheWholeLadderAndWarnsAboutACoarseStart) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_cli_test", "warn");
-  write_study(dir, "coarse", adaptive_grids());  // starts at Δ* 3.3
-  write_study(dir, "fine", adaptive_grids({{"coarsest_delta_star", 2.0}}));
+  write_series_study(dir, "coarse", adaptive_grids());  // starts at Δ* 3.3
+  write_series_study(dir, "fine", adaptive_grids({{"coarsest_delta_star", 2.0}}));
   auto r = gridfree_in(dir, "validate coarse.json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("/grids/coarsest_delta_star 3.3 > 2"), std::string::npos) << r.err;
@@ -212,7 +175,7 @@ TEST(AdaptiveCli, ValidateJudgesTheWholeLadderAndWarnsAboutACoarseStart) {
 
 TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("adaptive_cli_test", "plan");
-  write_study(dir, "fixed", {{"delta_star", whole_ladder()}});
+  write_series_study(dir, "fixed", {{"delta_star", whole_ladder()}});
   auto r = gridfree_in(dir, "plan fixed.json --target-rde 0.001 --json --db none.sqlite");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto plan = nlohmann::json::parse(r.out)["target"];
@@ -247,7 +210,7 @@ TEST(AdaptiveCli, PlanTargetIsAPrioriWithoutDataAndFittedWithIt) {
   EXPECT_GT(row["cost_ratio"][0].get<double>(), 0.0) << row.dump();
   EXPECT_EQ(plan["model"]["similar_series"], 1);
   // Independent least squares of log RDE on log Δ* over the stored rows.
-  std::stringstream rows(sql(dir / "g.sqlite", "SELECT delta_star, rde FROM uncertainties"));
+  std::stringstream rows(sqlite_query(dir / "g.sqlite", "SELECT delta_star, rde FROM uncertainties"));
   double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0, h = 0, e = 0;
   char bar = 0;
   while (rows >> h >> bar >> e) {

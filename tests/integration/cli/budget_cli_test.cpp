@@ -17,17 +17,18 @@
 #include <nlohmann/json.hpp>
 
 #include "job/memory_estimate.h"
+#include "project_paths.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
-
+using gridfree::test_support::kFakeWorker;
+using gridfree::test_support::kGridfreeExe;
+using gridfree::test_support::quickstart_document;
 using gridfree::test_support::shell_quote;
-std::string quote(const std::string& s) { return shell_quote(s); }
 
 struct Interval {
   double start = 0, end = 0, bytes = 0;
@@ -35,9 +36,8 @@ struct Interval {
 
 // The study: two series (cases mem1, mem2) on Δ* = 0.3 (the big job), 2.5,
 // 3.3, 5 (small jobs) of the 30 × 200 × 10 d bed.
-fs::path write_study(const fs::path& dir) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+fs::path write_budget_study(const fs::path& dir) {
+  auto doc = quickstart_document();
   doc["name"] = "budget";
   const auto pc1 = doc["cases"]["PC1"];
   doc["cases"] = {{"mem1", pc1}, {"mem2", pc1}};
@@ -51,19 +51,19 @@ fs::path write_study(const fs::path& dir) {
 
 TEST(BudgetCli, SixtyPercentJobsNeverOverlapAndSmallJobsBackfill) {
   const fs::path dir = gridfree::test_support::fresh_scratch_dir("budget_cli", "sixty");
-  const auto study = write_study(dir);
+  const auto study = write_budget_study(dir);
   // Big job: round(30/0.3) × round(200/0.3) × round(10/0.3) cells; the
   // budget makes its estimate 60 % of it.
   // The worker's model (job/memory_estimate.h): B/cell · N + base.
   const double big = gridfree::kWorkerBytesPerCell * 100 * 667 * 33 + gridfree::kWorkerBaseBytes;
   const double budget = big / 0.6;
   const fs::path times = dir / "times.txt";
-  const std::string cmd = "cd " + quote(dir.string()) + " && GRIDFREE_WORKER=" + quote(kFake.string()) +
+  const std::string cmd = "cd " + shell_quote(dir.string()) +
+                          " && GRIDFREE_WORKER=" + shell_quote(kFakeWorker.string()) +
                           " GRIDFREE_FAKE_BYTES_PER_CELL=" + std::to_string(gridfree::kWorkerBytesPerCell) +
-                          " GRIDFREE_FAKE_S_PER_GIB=1.5 GRIDFREE_FAKE_TIMES=" + quote(times.string()) + " " +
-                          quote((fs::path(GRIDFREE_BIN_DIR) / "gridfree").string()) + " run " +
-                          quote(study.string()) + " -j 4 --memory-budget " +
-                          std::to_string(static_cast<long long>(budget)) + " 2>&1";
+                          " GRIDFREE_FAKE_S_PER_GIB=1.5 GRIDFREE_FAKE_TIMES=" + shell_quote(times.string()) + " " +
+                          shell_quote(kGridfreeExe.string()) + " run " + shell_quote(study.string()) +
+                          " -j 4 --memory-budget " + std::to_string(static_cast<long long>(budget)) + " 2>&1";
   std::string log;
   FILE* p = popen(cmd.c_str(), "r");
   char buf[4096];

@@ -20,8 +20,11 @@
 #include <nlohmann/json.hpp>
 
 #include "contract_job.h"
+#include "fake_worker.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
+#include "test_files.h"
 
 namespace {
 
@@ -38,17 +41,9 @@ nlohmann::json small_bed_job() {
   return job;
 }
 
-void write(const fs::path& p, const nlohmann::json& j) { std::ofstream(p) << j.dump(2); }
-
-nlohmann::json read(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using gridfree::test_support::load_json;
+using gridfree::test_support::save_json;
+using gridfree::test_support::slurp;
 
 std::string worker() { return std::string(GRIDFREE_BIN_DIR) + "/gridfree-worker"; }
 
@@ -83,7 +78,7 @@ int solve_and_terminate_at(const fs::path& dir, int stop_at) {
     int status = 0;
     if (::waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     try {
-      if (fs::exists(dir / "progress.json") && read(dir / "progress.json")["iteration"].get<int>() >= stop_at) {
+      if (fs::exists(dir / "progress.json") && load_json(dir / "progress.json")["iteration"].get<int>() >= stop_at) {
         ::kill(pid, SIGTERM);
         sent = true;
       }
@@ -99,11 +94,11 @@ int solve_and_terminate_at(const fs::path& dir, int stop_at) {
 
 TEST(CheckpointCli, StoppedAtHalfResumesToTheUninterruptedResult) {
   const fs::path dir = gridfree::test_support::fresh_scratch_dir("checkpoint_cli", "half");
-  write(dir / "job.json", small_bed_job());
+  save_json(dir / "job.json", small_bed_job());
   // Reference: uninterrupted.
   const auto ref_run = solve(dir, "reference.json", "-q");
   ASSERT_EQ(ref_run.exit_code, 0) << ref_run.err;
-  const nlohmann::json ref = read(dir / "reference.json");
+  const nlohmann::json ref = load_json(dir / "reference.json");
   const int n = ref["iterations"].get<int>();
   const double dp_ref = ref["srq"]["dp_star"].get<double>();
   ASSERT_GE(n, 20) << "too few iterations to stop half-way";
@@ -114,7 +109,7 @@ TEST(CheckpointCli, StoppedAtHalfResumesToTheUninterruptedResult) {
   EXPECT_FALSE(fs::exists(dir / "result.json"));
   // The progress file times the outer iterations (what the orchestrator's
   // stop grace is sized by): 0 < latest ≤ longest ≤ the whole elapsed time.
-  const nlohmann::json progress = read(dir / "progress.json");
+  const nlohmann::json progress = load_json(dir / "progress.json");
   ASSERT_TRUE(progress["iteration_s"].is_number() && progress["longest_iteration_s"].is_number()) << progress;
   EXPECT_GT(progress["iteration_s"].get<double>(), 0.0);
   EXPECT_LE(progress["iteration_s"].get<double>(), progress["longest_iteration_s"].get<double>());
@@ -125,7 +120,7 @@ TEST(CheckpointCli, StoppedAtHalfResumesToTheUninterruptedResult) {
   const auto resumed = solve(dir, "result.json", "--checkpoint '" + (dir / "checkpoint.bin").string() +
                                                      "' --resume '" + (dir / "checkpoint.bin").string() + "'");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  const nlohmann::json res = read(dir / "result.json");
+  const nlohmann::json res = load_json(dir / "result.json");
   const int k = res["extra"]["resumed_from_iteration"].get<int>();
   EXPECT_GE(k, n / 2);
   EXPECT_LT(k, n);
@@ -148,18 +143,18 @@ TEST(CheckpointCli, CorruptOrForeignCheckpointIsIgnoredWithAWarning) {
   const fs::path dir = gridfree::test_support::fresh_scratch_dir("checkpoint_cli", "refused");
   nlohmann::json other = small_bed_job();
   other["numerics"]["max_iterations"] = 1999;  // another job (hash), same grid
-  write(dir / "job.json", other);
+  save_json(dir / "job.json", other);
   const int code = solve_and_terminate_at(dir, 10);
   ASSERT_EQ(code, 130) << slurp(dir / "stopped.log");
   ASSERT_TRUE(fs::exists(dir / "checkpoint.bin"));
 
-  write(dir / "job.json", small_bed_job());
+  save_json(dir / "job.json", small_bed_job());
   const std::string resume = "--resume '" + (dir / "checkpoint.bin").string() + "'";
   const auto foreign = solve(dir, "foreign.json", resume);
   ASSERT_EQ(foreign.exit_code, 0) << foreign.err;
   EXPECT_NE(foreign.err.find("ignoring the checkpoint"), std::string::npos) << foreign.err;
   EXPECT_NE(foreign.err.find("belongs to job"), std::string::npos) << foreign.err;
-  EXPECT_FALSE(read(dir / "foreign.json")["extra"].contains("resumed_from_iteration"));
+  EXPECT_FALSE(load_json(dir / "foreign.json")["extra"].contains("resumed_from_iteration"));
 
   // Flip one byte in the middle (the arrays): the checksum refuses it.
   std::string bytes = slurp(dir / "checkpoint.bin");
@@ -168,27 +163,22 @@ TEST(CheckpointCli, CorruptOrForeignCheckpointIsIgnoredWithAWarning) {
   const auto corrupt = solve(dir, "corrupt.json", resume);
   ASSERT_EQ(corrupt.exit_code, 0) << corrupt.err;
   EXPECT_NE(corrupt.err.find("checksum mismatch"), std::string::npos) << corrupt.err;
-  EXPECT_FALSE(read(dir / "corrupt.json")["extra"].contains("resumed_from_iteration"));
+  EXPECT_FALSE(load_json(dir / "corrupt.json")["extra"].contains("resumed_from_iteration"));
 }
 
 // `gridfree run` deletes a job's checkpoint once its result is stored (fake
 // worker mode ckok: leaves checkpoint.bin behind and converges).
 TEST(CheckpointCli, RunRemovesCheckpointsOfStoredResults) {
   const fs::path dir = gridfree::test_support::fresh_scratch_dir("checkpoint_cli", "cleanup");
-  const fs::path source = GRIDFREE_SOURCE_DIR;
-  std::ifstream in(source / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+  auto doc = gridfree::test_support::quickstart_document();
   doc["name"] = "cleanup";
   const auto pc1 = doc["cases"]["PC1"];
   doc["cases"] = {{"ckok", pc1}};
   doc["factors"] = {{"convection", {"superbee"}}, {"fwhm_dp", {6}}, {"drag", {"bvk"}}};
   doc["design"] = "factorial";
   doc["grids"] = {{"delta_star", {5.0, 4.0, 3.3, 2.5}}};
-  write(dir / "cleanup.json", doc);
-  const auto r = gridfree::test_support::run_command(
-      "cd '" + dir.string() + "' && GRIDFREE_WORKER='" + (source / "tests/fixtures/fake_worker.sh").string() + "' '" +
-          std::string(GRIDFREE_BIN_DIR) + "/gridfree' run cleanup.json -j 2",
-      dir / "run_stderr.txt");
+  save_json(dir / "cleanup.json", doc);
+  const auto r = gridfree::test_support::gridfree_in(dir, "run cleanup.json -j 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   int results = 0, checkpoints = 0;
   for (const auto& e : fs::recursive_directory_iterator(dir / "gridfree.sqlite.runs")) {

@@ -14,91 +14,65 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fake_worker.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
-
+using gridfree::test_support::gridfree_in;
 using gridfree::test_support::shell_quote;
-std::string quote(const std::string& s) { return shell_quote(s); }
-
-fs::path study_file(const fs::path& dir, const std::string& name) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
-  doc["name"] = name;
-  const auto pc1 = doc["cases"]["PC1"];
-  doc["cases"] = {{"ok", pc1}};
-  doc["factors"] = {{"convection", {"superbee"}}, {"fwhm_dp", {6}}, {"drag", {"bvk"}}};
-  doc["design"] = "factorial";
-  doc["grids"] = {{"delta_star", {5.0, 4.0, 3.3}}};
-  const auto file = dir / (name + ".json");
-  std::ofstream(file) << doc.dump(2);
-  return file;
-}
+using gridfree::test_support::sqlite_query;
+using gridfree::test_support::write_ok_study;
 
 // Starts a sqlite3 shell that holds a write transaction on `db` for `seconds`;
 // returns once the transaction has begun (the marker file exists).
 FILE* hold_write_lock(const fs::path& db, const fs::path& marker, int seconds) {
   const std::string script = "BEGIN IMMEDIATE;\nINSERT INTO studies(name) SELECT NULL WHERE 0;\n.shell touch " +
-                             quote(marker.string()) + "\n.shell sleep " + std::to_string(seconds) + "\nCOMMIT;\n";
-  FILE* p = popen(("sqlite3 " + quote(db.string()) + " >/dev/null 2>&1").c_str(), "w");
+                             shell_quote(marker.string()) + "\n.shell sleep " + std::to_string(seconds) + "\nCOMMIT;\n";
+  FILE* p = popen(("sqlite3 " + shell_quote(db.string()) + " >/dev/null 2>&1").c_str(), "w");
   std::fputs(script.c_str(), p);
   std::fflush(p);
   for (int i = 0; i < 200 && !fs::exists(marker); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
   return p;
 }
 
-std::string count(const fs::path& db, const char* table) {
-  FILE* p = popen(("sqlite3 " + quote(db.string()) + " 'SELECT COUNT(*) FROM " + table + "'").c_str(), "r");
-  char buf[64] = {};
-  std::fgets(buf, sizeof buf, p);
-  pclose(p);
-  return buf;
-}
-
-gridfree::test_support::CommandRun gridfree_cmd(const std::string& args, const fs::path& dir, const std::string& env) {
-  return gridfree::test_support::run_command(
-      "cd " + quote(dir.string()) + " && GRIDFREE_WORKER=" + quote(kFake.string()) + " " + env + " " +
-          quote(std::string(GRIDFREE_BIN_DIR) + "/gridfree") + " " + args,
-      dir / "stderr.txt");
-}
-
 TEST(DbContention, ASecondWriterWaitsAndNamesTheHolder) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("db_contention", "wait");
   const auto db = dir / "g.sqlite";
-  ASSERT_EQ(gridfree_cmd("submit " + quote(study_file(dir, "first").string()) + " --db g.sqlite", dir, "").exit_code, 0);
-  const std::string studies_before = count(db, "studies");
+  ASSERT_EQ(
+      gridfree_in(dir, "submit " + shell_quote(write_ok_study(dir, "first").string()) + " --db g.sqlite").exit_code, 0);
+  const std::string studies_before = sqlite_query(db, "SELECT COUNT(*) FROM studies");
 
   FILE* holder = hold_write_lock(db, dir / "held", 4);  // > the 2 s after which the wait is announced
   ASSERT_TRUE(fs::exists(dir / "held"));
   const auto start = std::chrono::steady_clock::now();
-  const auto r = gridfree_cmd("submit " + quote(study_file(dir, "second").string()) + " --db g.sqlite", dir, "");
+  const auto r = gridfree_in(dir, "submit " + shell_quote(write_ok_study(dir, "second").string()) + " --db g.sqlite");
   const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   pclose(holder);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_GT(waited, 2.0);
   EXPECT_NE(r.err.find("waiting for the database"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("sqlite3"), std::string::npos) << "the holder's command line: " << r.err;
-  EXPECT_NE(count(db, "studies"), studies_before);
+  EXPECT_NE(sqlite_query(db, "SELECT COUNT(*) FROM studies"), studies_before);
 }
 
 TEST(DbContention, AHolderBeyondTheWaitIsNamedNotAnInternalError) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("db_contention", "bound");
   const auto db = dir / "g.sqlite";
-  ASSERT_EQ(gridfree_cmd("submit " + quote(study_file(dir, "first").string()) + " --db g.sqlite", dir, "").exit_code, 0);
-  const std::string studies_before = count(db, "studies");
+  ASSERT_EQ(
+      gridfree_in(dir, "submit " + shell_quote(write_ok_study(dir, "first").string()) + " --db g.sqlite").exit_code, 0);
+  const std::string studies_before = sqlite_query(db, "SELECT COUNT(*) FROM studies");
   FILE* holder = hold_write_lock(db, dir / "held", 4);
-  const auto r = gridfree_cmd("run " + quote(study_file(dir, "second").string()) + " --db g.sqlite", dir,
-                              "GRIDFREE_DB_WAIT_S=1");
+  const auto r = gridfree_in(dir, "run " + shell_quote(write_ok_study(dir, "second").string()) + " --db g.sqlite",
+                             "GRIDFREE_DB_WAIT_S=1");
   pclose(holder);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(r.err.find("internal"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("still being written by pid"), std::string::npos) << r.err;
-  EXPECT_EQ(count(db, "studies"), studies_before);
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM studies"), studies_before);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
@@ -25,13 +26,10 @@ namespace {
 namespace fs = std::filesystem;
 using gridfree::test_support::run_executable;
 using gridfree::test_support::shell_quote;
+using gridfree::test_support::quickstart_document;
 using gridfree::test_support::sqlite_query;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
 
-nlohmann::json quickstart_case() {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  return nlohmann::json::parse(in)["cases"]["PC1"];
-}
+nlohmann::json quickstart_case() { return quickstart_document()["cases"]["PC1"]; }
 
 // The CSV's data rows as their text tokens (header `x,y,z,d`).
 std::vector<std::vector<std::string>> csv_rows(const fs::path& file) {
@@ -98,8 +96,7 @@ TEST(DumpEnsembleCli, SnapshotsOfOneDumpAreAnEnsembleAndMatchTheirCsv) {
     }
   }
 
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto study = nlohmann::json::parse(in);
+  auto study = quickstart_document();
   study["name"] = "dump-ensemble";
   study["cases"] = nlohmann::json::object();
   for (std::size_t k = 0; k < seeds.size(); ++k) {

@@ -18,18 +18,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "project_paths.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
-const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
-
+using gridfree::test_support::kFakeWorker;
+using gridfree::test_support::kGridfreeExe;
+using gridfree::test_support::quickstart_document;
 using gridfree::test_support::shell_quote;
-std::string quote(const std::string& s) { return shell_quote(s); }
 
 std::string capture(const std::string& cmd, int* code = nullptr) {
   std::string out;
@@ -43,7 +43,7 @@ std::string capture(const std::string& cmd, int* code = nullptr) {
 
 // Rows of a query, '|'-separated columns.
 std::vector<std::vector<std::string>> rows(const fs::path& db, const std::string& query) {
-  std::istringstream in(capture("sqlite3 " + quote(db.string()) + " " + quote(query)));
+  std::istringstream in(capture("sqlite3 " + shell_quote(db.string()) + " " + shell_quote(query)));
   std::vector<std::vector<std::string>> out;
   for (std::string line; std::getline(in, line);) {
     std::vector<std::string> cols;
@@ -70,9 +70,8 @@ Stats stats(const std::vector<double>& x) {
   return s;
 }
 
-fs::path write_study(const fs::path& dir) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+fs::path write_ensembles_study(const fs::path& dir) {
+  auto doc = quickstart_document();
   doc["name"] = "ens";
   const auto pc1 = doc["cases"]["PC1"];
   doc["cases"] = nlohmann::json::object();
@@ -88,12 +87,13 @@ fs::path write_study(const fs::path& dir) {
 
 TEST(EnsemblesCli, ViewAndReportGiveTheEnsembleStatistics) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("cli_test", "ensembles");
-  const auto study = write_study(dir);
+  const auto study = write_ensembles_study(dir);
   int code = -1;
-  const std::string log = capture("cd " + quote(dir.string()) + " && GRIDFREE_WORKER=" + quote(kFake.string()) + " " +
-                                      quote(kGridfree.string()) + " run " + quote(study.string()) +
-                                      " --db ens.sqlite -j 2 --out report",
-                                  &code);
+  const std::string log =
+      capture("cd " + shell_quote(dir.string()) + " && GRIDFREE_WORKER=" + shell_quote(kFakeWorker.string()) + " " +
+                  shell_quote(kGridfreeExe.string()) + " run " + shell_quote(study.string()) +
+                  " --db ens.sqlite -j 2 --out report",
+              &code);
   ASSERT_EQ(code, 0) << log;
   const auto db = dir / "ens.sqlite";
   EXPECT_EQ(rows(db, "SELECT name, case_name FROM ensembles ORDER BY case_name").size(), 3u);

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "contract_job.h"
+#include "project_paths.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
@@ -22,11 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using gridfree::test_support::CommandRun;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kCorpus = kSource / "tests/fixtures/hostile";
+using gridfree::test_support::kSourceDir;
+const fs::path kCorpus = kSourceDir / "tests/fixtures/hostile";
 
 using gridfree::test_support::shell_quote;
-std::string quote(const std::string& s) { return shell_quote(s); }
+using gridfree::test_support::sqlite_query;
 
 // Runs and measures; the bound is generous against machine load but far below
 // the minutes the unbounded checks took.
@@ -42,17 +43,9 @@ constexpr double kBoundSeconds = 10.0;
 // hundred characters each (two file paths and the distances).
 constexpr std::size_t kMaxMessageBytes = 8000;
 
-std::string sql(const fs::path& db, const std::string& query) {
-  FILE* p = popen(("sqlite3 " + quote(db.string()) + " " + quote(query) + " 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, p) != nullptr) out += buf;
-  pclose(p);
-  return out;
-}
-
 std::string database_state(const fs::path& db) {
-  return sql(db, "SELECT COUNT(*), MAX(id) FROM studies; SELECT COUNT(*) FROM jobs; SELECT COUNT(*) FROM results;");
+  return sqlite_query(
+      db, "SELECT COUNT(*), MAX(id) FROM studies; SELECT COUNT(*) FROM jobs; SELECT COUNT(*) FROM results;");
 }
 
 class HostileInput : public ::testing::Test {
@@ -68,8 +61,9 @@ class HostileInput : public ::testing::Test {
   void expect_job_refused(const fs::path& job, const std::string& expect, const std::string& extra = "") {
     double seconds = 0;
     const fs::path out = dir_ / "result.json";
-    const auto r = timed("gridfree-worker", "solve " + quote(job.string()) + " -o " + quote(out.string()) + extra, dir_,
-                         seconds);
+    const auto r =
+        timed("gridfree-worker", "solve " + shell_quote(job.string()) + " -o " + shell_quote(out.string()) + extra,
+              dir_, seconds);
     EXPECT_EQ(r.exit_code, 2) << job.filename() << "\n" << r.err.substr(0, 2000);
     EXPECT_NE(r.err.find(expect), std::string::npos) << job.filename() << " should name " << expect << ":\n"
                                                      << r.err.substr(0, 2000);
@@ -81,19 +75,19 @@ class HostileInput : public ::testing::Test {
   void expect_study_refused(const fs::path& study, const std::string& expect) {
     const fs::path db = dir_ / "existing.sqlite";
     if (!fs::exists(db)) {
-      std::ifstream in(kSource / "tests/fixtures/hostile/studies/huge_density.json");
+      std::ifstream in(kSourceDir / "tests/fixtures/hostile/studies/huge_density.json");
       auto good = nlohmann::json::parse(in);
       good["name"] = "good";
       good["cases"]["PC1"]["gas"]["density_g_cm3"] = 0.001;
       const auto file = write("good.json", good.dump());
-      ASSERT_EQ(gridfree::test_support::run_executable("gridfree", "submit " + quote(file.string()) + " --db " +
-                                                                       quote(db.string()), dir_).exit_code, 0);
+      ASSERT_EQ(gridfree::test_support::run_executable("gridfree", "submit " + shell_quote(file.string()) + " --db " +
+                                                                       shell_quote(db.string()), dir_).exit_code, 0);
     }
     const std::string before = database_state(db);
     for (const std::string cmd : {"validate ", "run "}) {
-      const std::string db_arg = cmd == "run " ? " --db " + quote(db.string()) : "";
+      const std::string db_arg = cmd == "run " ? " --db " + shell_quote(db.string()) : "";
       double seconds = 0;
-      const auto r = timed("gridfree", cmd + quote(study.string()) + db_arg, dir_, seconds);
+      const auto r = timed("gridfree", cmd + shell_quote(study.string()) + db_arg, dir_, seconds);
       EXPECT_EQ(r.exit_code, 2) << cmd << study.filename() << "\n" << r.err.substr(0, 2000);
       EXPECT_NE(r.err.find(expect), std::string::npos) << cmd << study.filename() << " should name " << expect
                                                        << ":\n" << r.err.substr(0, 2000);

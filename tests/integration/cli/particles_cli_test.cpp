@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "run_command.h"
+#include "test_files.h"
 
 namespace {
 
@@ -26,12 +27,7 @@ CommandRun run_worker(const std::string& args, const fs::path& dir) {
   return gridfree::test_support::run_executable("gridfree-worker", args, dir);
 }
 
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using gridfree::test_support::slurp;
 
 std::size_t count_lines(const std::string& text) {
   std::size_t n = 0;

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
@@ -25,7 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using gridfree::test_support::CommandRun;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
+using gridfree::test_support::quickstart_document;
+using gridfree::test_support::sqlite_query;
 
 // The quickstart case PC1 on one grid, Δ* = 1.5 (20×133×7 = 18 620 cells,
 // started from its nested-start level of 10×67×4 cells), with the steady
@@ -42,8 +44,7 @@ const fs::path kSource = GRIDFREE_SOURCE_DIR;
 // under the sanitizers beside other tests, an attempt once finished no outer
 // iteration inside the timeout placed from its reference and spent itself.
 void write_study(const fs::path& dir) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+  auto doc = quickstart_document();
   doc["name"] = "resume";
   const auto pc1 = doc["cases"]["PC1"];
   doc["cases"] = {{"PC1", pc1}};
@@ -64,15 +65,8 @@ CommandRun run(const fs::path& dir, const std::string& timeout) {
                                              dir / "stderr.txt");
 }
 
-std::string sql(const fs::path& db, const std::string& query) {
-  auto r = gridfree::test_support::run_command("sqlite3 '" + db.string() + "' \"" + query + "\"",
-                                               db.parent_path() / "sql.txt");
-  while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
-  return r.out;
-}
-
 nlohmann::json stored_result(const fs::path& db) {
-  const std::string text = sql(db, "SELECT result_json FROM results");
+  const std::string text = sqlite_query(db, "SELECT result_json FROM results");
   return text.empty() ? nlohmann::json() : nlohmann::json::parse(text);
 }
 
@@ -110,13 +104,13 @@ TEST(RunTimeoutResume, ATimedOutJobResumesFromItsCheckpointWithoutSpendingAnAtte
 
   // Stopped by the timeout at least once, each time with a checkpoint: the
   // job was released (attempt not spent), never retried or failed.
-  const int stops = std::stoi(sql(db, "SELECT COUNT(*) FROM events WHERE kind = 'release' AND message LIKE "
+  const int stops = std::stoi(sqlite_query(db, "SELECT COUNT(*) FROM events WHERE kind = 'release' AND message LIKE "
                                       "'timed out%checkpoint kept%'"));
-  EXPECT_GE(stops, 1) << sql(db, "SELECT kind, message FROM events");
-  EXPECT_EQ(sql(db, "SELECT COUNT(*) FROM events WHERE kind IN ('retry', 'requeue')"), "0");
-  EXPECT_EQ(sql(db, "SELECT status || ' ' || attempts FROM jobs"), "done 1")
+  EXPECT_GE(stops, 1) << sqlite_query(db, "SELECT kind, message FROM events");
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM events WHERE kind IN ('retry', 'requeue')"), "0");
+  EXPECT_EQ(sqlite_query(db, "SELECT status || ' ' || attempts FROM jobs"), "done 1")
       << "timeout " << timeout << " s; events:\n"
-      << sql(db, "SELECT kind, message FROM events");
+      << sqlite_query(db, "SELECT kind, message FROM events");
 
   // The stored result continues the last checkpoint (iteration k > 0) to
   // the reference's total: the checkpoint holds everything the next outer

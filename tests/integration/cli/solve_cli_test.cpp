@@ -17,6 +17,7 @@
 #include "contract_job.h"
 #include "run_command.h"
 #include "scratch_dir.h"
+#include "test_files.h"
 
 namespace {
 
@@ -37,29 +38,25 @@ struct Outcome {
 };
 
 // gridfree-worker solve `args`, run in `dir` (stderr kept there).
-Outcome run_worker(const std::string& args, const fs::path& dir) {
+Outcome worker_solve(const std::string& args, const fs::path& dir) {
   const auto r = gridfree::test_support::run_executable("gridfree-worker", "solve " + args, dir);
   return {r.exit_code, r.out + r.err};
 }
 
 fs::path scratch(const std::string& name) { return gridfree::test_support::fresh_scratch_dir("solve_cli", name); }
 
-void write(const fs::path& p, const nlohmann::json& j) { std::ofstream(p) << j.dump(2); }
-
-nlohmann::json read(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
+using gridfree::test_support::load_json;
+using gridfree::test_support::save_json;
 
 TEST(SolveCli, BaselineAtDeltaStar2ConvergesAndWritesEveryField) {
   const fs::path dir = scratch("baseline");
-  write(dir / "job.json", baseline_job("diffusion", {15, 100, 5}));
-  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " --vtk " +
+  save_json(dir / "job.json", baseline_job("diffusion", {15, 100, 5}));
+  const Outcome r = worker_solve((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " --vtk " +
                     (dir / "vtk").string() + " --threads 2 -q",
                               dir);
   const std::string cmd_note = "output:\n" + r.output;
   ASSERT_EQ(r.exit_code, 0) << cmd_note;
-  const nlohmann::json res = read(dir / "result.json");
+  const nlohmann::json res = load_json(dir / "result.json");
   EXPECT_EQ(res["schema"], "gridfree/result/1");
   EXPECT_EQ(res["status"], "converged");
   ASSERT_TRUE(res["srq"]["dp_star"].is_number());
@@ -91,8 +88,8 @@ TEST(SolveCli, ResultGoesToStdoutWithoutOutputFile) {
   const fs::path dir = scratch("stdout");
   nlohmann::json job = baseline_job("diffusion", {3, 20, 1});
   job["case"]["particles"] = {{"uniform", {{"solids_fraction", 0.3}}}};
-  write(dir / "job.json", job);
-  const Outcome r = run_worker((dir / "job.json").string() + " -q", dir);
+  save_json(dir / "job.json", job);
+  const Outcome r = worker_solve((dir / "job.json").string() + " -q", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json res = nlohmann::json::parse(r.output);
   EXPECT_EQ(res["status"], "converged");
@@ -102,10 +99,10 @@ TEST(SolveCli, IterationCapExitsThreeWithNotConvergedAndTheReason) {
   const fs::path dir = scratch("capped");
   nlohmann::json job = baseline_job("diffusion", {15, 100, 5});
   job["numerics"]["max_iterations"] = 2;
-  write(dir / "job.json", job);
-  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q", dir);
+  save_json(dir / "job.json", job);
+  const Outcome r = worker_solve((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q", dir);
   ASSERT_EQ(r.exit_code, 3) << r.output;
-  const nlohmann::json res = read(dir / "result.json");
+  const nlohmann::json res = load_json(dir / "result.json");
   EXPECT_EQ(res["status"], "not_converged");
   EXPECT_EQ(res["iterations"], 2);
   EXPECT_NE(res["reason"].get<std::string>().find("not converged after 2 iterations"), std::string::npos)
@@ -114,10 +111,10 @@ TEST(SolveCli, IterationCapExitsThreeWithNotConvergedAndTheReason) {
 
 TEST(SolveCli, CentroidDepositionFailsBelowDeltaStarOne) {
   const fs::path dir = scratch("centroid");
-  write(dir / "job.json", baseline_job("centroid", {60, 400, 20}));  // Δ* = 0.5
-  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q", dir);
+  save_json(dir / "job.json", baseline_job("centroid", {60, 400, 20}));  // Δ* = 0.5
+  const Outcome r = worker_solve((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q", dir);
   ASSERT_EQ(r.exit_code, 3) << r.output;
-  const nlohmann::json res = read(dir / "result.json");
+  const nlohmann::json res = load_json(dir / "result.json");
   EXPECT_EQ(res["status"], "failed");
   const std::string reason = res["reason"];
   EXPECT_NE(reason.find("solids fraction"), std::string::npos) << reason;
@@ -129,15 +126,15 @@ TEST(SolveCli, JobWithoutGridIsInvalidInputAndWritesNothing) {
   const fs::path dir = scratch("nogrid");
   nlohmann::json job = baseline_job("diffusion", {15, 100, 5});
   job["numerics"].erase("grid");
-  write(dir / "job.json", job);
-  const Outcome r = run_worker((dir / "job.json").string() + " -o " + (dir / "result.json").string(), dir);
+  save_json(dir / "job.json", job);
+  const Outcome r = worker_solve((dir / "job.json").string() + " -o " + (dir / "result.json").string(), dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("grid"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "result.json"));
 }
 
 TEST(SolveCli, MissingJobFileIsInvalidInput) {
-  const Outcome r = run_worker("/nonexistent/job.json -q", scratch("missing"));
+  const Outcome r = worker_solve("/nonexistent/job.json -q", scratch("missing"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
 }
 
@@ -151,7 +148,7 @@ TEST(SolveCli, WithoutThreadsOptionOmpNumThreadsDecides) {
   const fs::path dir = scratch("omp_num_threads");
   nlohmann::json job = baseline_job("diffusion", {3, 20, 1});
   job["case"]["particles"] = {{"uniform", {{"solids_fraction", 0.3}}}};
-  write(dir / "job.json", job);
+  save_json(dir / "job.json", job);
   const auto one = run_with_env("OMP_NUM_THREADS=1", "solve " + (dir / "job.json").string(), dir);
   ASSERT_EQ(one.exit_code, 0) << one.err;
   EXPECT_NE(one.err.find("with 1 thread(s)"), std::string::npos) << one.err;
@@ -179,8 +176,8 @@ TEST(SolveCli, IdleThreadsSleepUnlessTheUserChoseAPolicy) {
 
 TEST(SolveCli, UnknownStartIsInvalidInput) {
   const fs::path dir = scratch("bad_start");
-  write(dir / "job.json", baseline_job("diffusion", {3, 20, 1}));
-  const Outcome r = run_worker((dir / "job.json").string() + " --start sideways -q", dir);
+  save_json(dir / "job.json", baseline_job("diffusion", {3, 20, 1}));
+  const Outcome r = worker_solve((dir / "job.json").string() + " --start sideways -q", dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--start"), std::string::npos) << r.output;
 }

@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fake_worker.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
@@ -21,20 +23,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using gridfree::test_support::CommandRun;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
+using gridfree::test_support::gridfree_in;
+using gridfree::test_support::quickstart_document;
+using gridfree::test_support::sqlite_query;
 
-CommandRun gridfree_in(const fs::path& dir, const std::string& args) {
-  return gridfree::test_support::run_command("cd '" + dir.string() + "' && GRIDFREE_WORKER='" + kFake.string() +
-                                                 "' '" + std::string(GRIDFREE_BIN_DIR) + "/gridfree' " + args,
-                                             dir / "stderr.txt");
-}
-
-std::string sql(const fs::path& db, const std::string& query) { return gridfree::test_support::sqlite_query(db, query); }
-
-fs::path write_study(const fs::path& dir, const std::string& name, bool alignment) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+fs::path write_alignment_study(const fs::path& dir, const std::string& name, bool alignment) {
+  auto doc = quickstart_document();
   doc["name"] = name;
   doc["cases"] = {{"ok", doc["cases"]["PC1"]}};
   doc.erase("factors");
@@ -51,14 +45,14 @@ double fake_dp(int nx, int ny, int nz) { return 1159.0 + std::cbrt(30.0 * 200.0 
 
 TEST(StudyAlignmentCli, VariantsRunAndTheSpreadReachesViewAndReport) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("alignment_cli_test", "with");
-  write_study(dir, "aligned", true);
+  write_alignment_study(dir, "aligned", true);
   const CommandRun run = gridfree_in(dir, "run aligned.json -j 2 --db g.sqlite");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const fs::path db = dir / "g.sqlite";
-  EXPECT_EQ(sql(db, "SELECT COUNT(*) FROM jobs WHERE status = 'done'"), "8");  // 4 grids + 2 × 2 variants
-  EXPECT_EQ(sql(db, "SELECT COUNT(*) FROM v_results"), "4");
-  EXPECT_EQ(sql(db, "SELECT COUNT(*) FROM uncertainties"), "4");  // the extrapolation saw the 4 grids only
-  const std::string rows = sql(db, "SELECT nx, ny, nz, spread FROM v_alignment ORDER BY grid_index");
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM jobs WHERE status = 'done'"), "8");  // 4 grids + 2 × 2 variants
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM v_results"), "4");
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM uncertainties"), "4");  // the extrapolation saw the 4 grids only
+  const std::string rows = sqlite_query(db, "SELECT nx, ny, nz, spread FROM v_alignment ORDER BY grid_index");
   std::istringstream lines(rows);
   std::string report;
   {
@@ -103,12 +97,12 @@ TEST(StudyAlignmentCli, VariantsRunAndTheSpreadReachesViewAndReport) {
 
 TEST(StudyAlignmentCli, WithoutTheOptionNothingChanges) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("alignment_cli_test", "without");
-  write_study(dir, "plain", false);
+  write_alignment_study(dir, "plain", false);
   const CommandRun run = gridfree_in(dir, "run plain.json -j 2 --db g.sqlite");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const fs::path db = dir / "g.sqlite";
-  EXPECT_EQ(sql(db, "SELECT COUNT(*) FROM jobs"), "4");
-  EXPECT_EQ(sql(db, "SELECT COUNT(*) FROM v_alignment"), "0");
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM jobs"), "4");
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM v_alignment"), "0");
   EXPECT_FALSE(fs::exists(dir / "reports/plain/alignment.csv"));
   std::ifstream md(dir / "reports/plain/report.md");
   std::stringstream text;

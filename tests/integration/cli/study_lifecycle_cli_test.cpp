@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fake_worker.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
@@ -18,22 +20,15 @@ namespace {
 
 namespace fs = std::filesystem;
 using gridfree::test_support::CommandRun;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
-
-CommandRun gridfree_in(const fs::path& dir, const std::string& args) {
-  return gridfree::test_support::run_command("cd '" + dir.string() + "' && GRIDFREE_WORKER='" + kFake.string() +
-                                                 "' '" + std::string(GRIDFREE_BIN_DIR) + "/gridfree' " + args,
-                                             dir / "stderr.txt");
-}
-
-std::string sql(const fs::path& db, const std::string& query) { return gridfree::test_support::sqlite_query(db, query); }
+using gridfree::test_support::gridfree_in;
+using gridfree::test_support::quickstart_document;
+using gridfree::test_support::sqlite_query;
 
 // One case (`mode` picks the fake worker's behaviour) on the given grids.
-fs::path write_study(const fs::path& dir, const std::string& file, const std::string& name, const std::string& mode,
-                     const std::vector<double>& grids, const nlohmann::json& extra = nlohmann::json::object()) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+fs::path write_one_series_study(const fs::path& dir, const std::string& file, const std::string& name,
+                                const std::string& mode, const std::vector<double>& grids,
+                                const nlohmann::json& extra = nlohmann::json::object()) {
+  auto doc = quickstart_document();
   doc["name"] = name;
   const auto pc1 = doc["cases"]["PC1"];
   doc["cases"] = {{mode, pc1}};
@@ -48,59 +43,61 @@ fs::path write_study(const fs::path& dir, const std::string& file, const std::st
 
 TEST(StudyLifecycle, ChangedStudyNeedsReplaceAndReusesFinishedJobs) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "replace");
-  write_study(dir, "s1.json", "s", "ok", {5.0, 4.0, 3.3, 2.5});
+  write_one_series_study(dir, "s1.json", "s", "ok", {5.0, 4.0, 3.3, 2.5});
   ASSERT_EQ(gridfree_in(dir, "run s1.json -j 2 --db g.sqlite").exit_code, 0);
-  write_study(dir, "s2.json", "s", "ok", {5.0, 4.0, 3.3, 2.0});  // one grid changed
+  write_one_series_study(dir, "s2.json", "s", "ok", {5.0, 4.0, 3.3, 2.0});  // one grid changed
 
   const CommandRun refused = gridfree_in(dir, "run s2.json -j 2 --db g.sqlite");
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("--replace"), std::string::npos) << refused.err;
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "4");  // untouched
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "4");  // untouched
 
   const CommandRun replaced = gridfree_in(dir, "run s2.json -j 2 --db g.sqlite --replace");
   EXPECT_EQ(replaced.exit_code, 0) << replaced.err;
   EXPECT_NE(replaced.err.find("1 new, 3 already done"), std::string::npos) << replaced.err;
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "4");  // the Δ* 2.5 job went
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT COUNT(*) FROM studies"), "1");
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT MIN(delta_star_nominal) FROM v_results"), "2.0");
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT COUNT(*) FROM v_series WHERE f0 IS NOT NULL AND finest_u IS NOT NULL"), "1");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "4");  // the Δ* 2.5 job went
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM studies"), "1");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT MIN(delta_star_nominal) FROM v_results"), "2.0");
+  EXPECT_EQ(
+      sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM v_series WHERE f0 IS NOT NULL AND finest_u IS NOT NULL"),
+      "1");
 }
 
 TEST(StudyLifecycle, DeleteKeepsJobsOtherStudiesUse) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "delete");
-  write_study(dir, "a.json", "a", "ok", {5.0, 4.0, 3.3, 2.5});
-  write_study(dir, "b.json", "b", "ok", {5.0, 4.0, 3.3, 2.0});  // shares three grids with a
+  write_one_series_study(dir, "a.json", "a", "ok", {5.0, 4.0, 3.3, 2.5});
+  write_one_series_study(dir, "b.json", "b", "ok", {5.0, 4.0, 3.3, 2.0});  // shares three grids with a
   ASSERT_EQ(gridfree_in(dir, "run a.json -j 2 --db g.sqlite").exit_code, 0);
   ASSERT_EQ(gridfree_in(dir, "run b.json -j 2 --db g.sqlite").exit_code, 0);
-  ASSERT_EQ(sql(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "5");
+  ASSERT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "5");
   const std::string only_a =
-      sql(dir / "g.sqlite", "SELECT job_hash FROM v_results WHERE study = 'a' AND delta_star_nominal = 2.5");
+      sqlite_query(dir / "g.sqlite", "SELECT job_hash FROM v_results WHERE study = 'a' AND delta_star_nominal = 2.5");
   ASSERT_TRUE(fs::is_directory(dir / "g.sqlite.runs" / only_a));
 
   const CommandRun del = gridfree_in(dir, "delete a --db g.sqlite");
   EXPECT_EQ(del.exit_code, 0) << del.err;
   EXPECT_NE(del.out.find("1 job(s)"), std::string::npos) << del.out;
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "4");
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT COUNT(*) FROM results"), "4");
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT name FROM studies"), "b");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "4");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM results"), "4");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT name FROM studies"), "b");
   EXPECT_FALSE(fs::exists(dir / "g.sqlite.runs" / only_a));
-  EXPECT_EQ(sql(dir / "g.sqlite", "PRAGMA foreign_key_check"), "");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "PRAGMA foreign_key_check"), "");
 
   EXPECT_EQ(gridfree_in(dir, "delete a --db g.sqlite").exit_code, 2);  // gone
 }
 
 TEST(StudyLifecycle, StudyTimeoutKillsAHangingJob) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "timeout");
-  write_study(dir, "t.json", "t", "hang", {5.0}, {{"timeout_s", 0.5}});
+  write_one_series_study(dir, "t.json", "t", "hang", {5.0}, {{"timeout_s", 0.5}});
   const CommandRun r = gridfree_in(dir, "run t.json -j 1 --db g.sqlite");
   EXPECT_EQ(r.exit_code, 3) << r.err;
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT status FROM jobs"), "failed");
-  EXPECT_EQ(sql(dir / "g.sqlite", "SELECT attempts FROM jobs"), "2");  // killed, retried once, killed again
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT status FROM jobs"), "failed");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT attempts FROM jobs"), "2");  // killed, retried once, killed again
 }
 
 TEST(StudyLifecycle, PlanListsGridsAndWarnsAboutCloseNeighbours) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "plan");
-  write_study(dir, "p.json", "p", "ok", {2.0, 1.9, 1.5});
+  write_one_series_study(dir, "p.json", "p", "ok", {2.0, 1.9, 1.5});
   const CommandRun r = gridfree_in(dir, "plan p.json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("16 x 105 x 5"), std::string::npos) << r.out;  // Δ* 1.9 → round(L*/1.9)

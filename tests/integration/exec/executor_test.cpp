@@ -16,13 +16,14 @@
 #include "exec/local_executor.h"
 #include "exec/slurm_executor.h"
 #include "exec/worker_progress.h"
+#include "project_paths.h"
 #include "scratch_dir.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kFake = fs::path(GRIDFREE_SOURCE_DIR) / "tests/fixtures/fake_worker.sh";
+using test_support::kFakeWorker;
 
 fs::path temp_dir(const std::string& name) { return test_support::fresh_scratch_dir("exec_test", name); }
 
@@ -45,7 +46,7 @@ JobExit wait_for(Executor& ex, double limit_s = 20) {
 
 TEST(LocalExecutor, ConvergedJobExitsZeroAndWritesItsResultAndLog) {
   const auto root = temp_dir("ok");
-  LocalExecutor ex(kFake);
+  LocalExecutor ex(kFakeWorker);
   ex.start(launch(root, 1, "ok"));
   EXPECT_EQ(ex.in_flight(), 1u);
   const auto e = wait_for(ex);
@@ -59,7 +60,7 @@ TEST(LocalExecutor, ConvergedJobExitsZeroAndWritesItsResultAndLog) {
 
 TEST(LocalExecutor, ExitCodesAndSignalsAreReported) {
   const auto root = temp_dir("codes");
-  LocalExecutor ex(kFake);
+  LocalExecutor ex(kFakeWorker);
   ex.start(launch(root, 1, "noconv"));
   ex.start(launch(root, 2, "crash"));
   ex.start(launch(root, 3, "invalid"));
@@ -77,7 +78,7 @@ TEST(LocalExecutor, ExitCodesAndSignalsAreReported) {
 
 TEST(LocalExecutor, TimeoutKillsTheWholeProcessGroup) {
   const auto root = temp_dir("timeout");
-  LocalExecutor ex(kFake);
+  LocalExecutor ex(kFakeWorker);
   ex.start(launch(root, 7, "hang", 0.5));
   const std::string id = ex.external_id(7);
   ASSERT_EQ(id.rfind("local:", 0), 0u);
@@ -97,7 +98,7 @@ TEST(LocalExecutor, TimeoutKillsTheWholeProcessGroup) {
 // One job of the fake in `mode` with a timeout, run until it ends.
 JobExit timed_out(const std::string& test, const std::string& mode, double timeout_s, double grace_s) {
   const auto root = temp_dir(test);
-  LocalExecutor ex(kFake, grace_s);
+  LocalExecutor ex(kFakeWorker, grace_s);
   ex.start(launch(root, 1, mode, timeout_s));
   const auto e = wait_for(ex);
   EXPECT_EQ(e.how, JobExit::How::kTimedOut);
@@ -132,7 +133,7 @@ void wait_for_trap(const fs::path& run_dir) {
 std::pair<bool, bool> shutdown_checkpoints(const std::string& test, double grace_s, const std::string& first,
                                            const std::string& second) {
   const auto root = temp_dir(test);
-  LocalExecutor ex(kFake, grace_s);
+  LocalExecutor ex(kFakeWorker, grace_s);
   ex.start(launch(root, 1, first));
   ex.start(launch(root, 2, second));
   wait_for_trap(root / "hash1");
@@ -165,7 +166,7 @@ TEST(LocalExecutor, ATimeoutsGraceGrowsWithTheWorkersIterationTime) {
 // the progress file of the attempt before counts until then.
 TEST(LocalExecutor, AResumedWorkerKeepsTheGraceOfItsEarlierAttempt) {
   const auto root = temp_dir("grace_resumed");
-  LocalExecutor ex(kFake, 0.5);
+  LocalExecutor ex(kFakeWorker, 0.5);
   auto job = launch(root, 4, "slowcheckpointresumed");
   std::ofstream(progress_file(job.run_dir)) << R"({"iteration": 7, "longest_iteration_s": 2.0})";
   ex.start(job);
@@ -184,7 +185,7 @@ TEST(LocalExecutor, MissingWorkerIsALaunchFailure) {
 
 TEST(LocalExecutor, KillAllStopsEverythingInFlight) {
   const auto root = temp_dir("killall");
-  LocalExecutor ex(kFake);
+  LocalExecutor ex(kFakeWorker);
   ex.start(launch(root, 1, "hang"));
   ex.start(launch(root, 2, "hang"));
   const auto ids = ex.kill_all();
@@ -233,7 +234,7 @@ TEST(SlurmExecutor, SubmitsAnArrayAndReadsTheExitCodes) {
   std::ofstream(dir / "mode") << "run";
   SlurmSettings settings;
   settings.poll_s = 0.05;
-  SlurmExecutor ex(kFake, dir / "runs", settings, 2);
+  SlurmExecutor ex(kFakeWorker, dir / "runs", settings, 2);
   auto job = launch(dir / "runs", 1, "noconv");
   auto job2 = launch(dir / "runs", 4, "ok");
   ex.start(job);
@@ -288,7 +289,7 @@ TEST(SlurmExecutor, TheStopLeadGrowsWithTheEarlierAttemptsIterationTime) {
     SlurmSettings settings;
     settings.poll_s = 0.05;
     settings.time_minutes = limit_minutes;
-    SlurmExecutor ex(kFake, dir / "runs", settings, 2);
+    SlurmExecutor ex(kFakeWorker, dir / "runs", settings, 2);
     auto fresh = launch(dir / "runs", 1, "ok");
     auto resumed = launch(dir / "runs", 2, "ok");
     std::ofstream(progress_file(resumed.run_dir)) << R"({"iteration": 40, "longest_iteration_s": 210})";

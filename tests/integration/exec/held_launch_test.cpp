@@ -16,13 +16,14 @@
 #include <nlohmann/json.hpp>
 
 #include "exec/local_executor.h"
+#include "project_paths.h"
 #include "scratch_dir.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kFake = fs::path(GRIDFREE_SOURCE_DIR) / "tests/fixtures/fake_worker.sh";
+using test_support::kFakeWorker;
 
 JobLaunch held_launch(const fs::path& root) {
   const nlohmann::json doc = {{"case", {{"name", "ok"}, {"domain_dp", {30, 200, 10}}}},
@@ -39,7 +40,7 @@ bool process_exists(pid_t pid) { return ::kill(pid, 0) == 0; }
 
 TEST(HeldLaunch, TheWorkerRunsOnlyAfterRelease) {
   const auto root = test_support::fresh_scratch_dir("held_launch", "release");
-  LocalExecutor ex(kFake);
+  LocalExecutor ex(kFakeWorker);
   const JobLaunch job = held_launch(root);
   ex.start(job);
   const std::string id = ex.external_id(job.job_id);
@@ -64,7 +65,7 @@ TEST(HeldLaunch, AWorkerWhoseOrchestratorDiesBeforeReleaseNeverRuns) {
   ASSERT_GE(orchestrator, 0);
   if (orchestrator == 0) {  // a stand-in orchestrator: starts, reports the pid, dies unreleased
     ::close(ids[0]);
-    auto* ex = new LocalExecutor(kFake);  // leaked on purpose: no destructor, as under kill -9
+    auto* ex = new LocalExecutor(kFakeWorker);  // leaked on purpose: no destructor, as under kill -9
     ex->start(job);
     const std::string id = ex->external_id(job.job_id);
     (void)!::write(ids[1], id.data(), id.size());

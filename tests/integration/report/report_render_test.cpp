@@ -17,18 +17,14 @@
 #include <vector>
 
 #include "report/report.h"
+#include "test_files.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 int count_of(const std::string& text, const std::string& needle) {
   int n = 0;
@@ -83,7 +79,7 @@ class ReportRender : public ::testing::Test {
 };
 
 TEST_F(ReportRender, LibraryExtrapolationRecoversF0) {
-  const std::string csv = read(dir_ / "series.csv");
+  const std::string csv = slurp(dir_ / "series.csv");
   // The f0 column of each data row. Exact first-order data: the fits
   // reproduce f0 up to the least-squares round-off and the p search
   // resolution of the library; 1e-6 relative is far below any plotted scale.
@@ -102,7 +98,7 @@ TEST_F(ReportRender, LibraryExtrapolationRecoversF0) {
     EXPECT_NEAR(std::stod(cells[f0_col]), expected[s], 1e-6 * expected[s]) << line;
   }
   // One-factor difference (drag): 2|1158.8 − 850|/(1158.8 + 850).
-  std::istringstream diff(read(dir_ / "differences.csv"));
+  std::istringstream diff(slurp(dir_ / "differences.csv"));
   const double d = 2 * (1158.8 - 850.0) / (1158.8 + 850.0);
   std::string diff_header, diff_row;
   ASSERT_TRUE(std::getline(diff, diff_header));
@@ -113,7 +109,7 @@ TEST_F(ReportRender, LibraryExtrapolationRecoversF0) {
   const auto d_col = std::find(diff_names.begin(), diff_names.end(), "relative_difference") - diff_names.begin();
   ASSERT_GT(diff_cells.size(), static_cast<std::size_t>(d_col));
   EXPECT_NEAR(std::stod(diff_cells[d_col]), d, 1e-6);
-  EXPECT_NE(read(dir_ / "failures.csv").find("worker crashed"), std::string::npos);
+  EXPECT_NE(slurp(dir_ / "failures.csv").find("worker crashed"), std::string::npos);
 }
 
 std::string find_chromium() {
@@ -135,7 +131,7 @@ TEST_F(ReportRender, ChromiumRendersTheSvgCharts) {
                           " --user-data-dir='" + profile.string() + "' --dump-dom 'file://" +
                           fs::absolute(files_.html).string() + "' > '" + dom.string() + "' 2>/dev/null";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  const std::string text = read(dom);
+  const std::string text = slurp(dom);
   // The parsed DOM holds every inline chart as an svg element, with its
   // drawn content, and the page title.
   EXPECT_EQ(count_of(text, "<svg"), static_cast<int>(files_.svg.size()));
@@ -206,8 +202,8 @@ TEST_F(ReportRender, ChromiumPrintsEveryColumnAndNoteToA4) {
                           "' --print-to-pdf='" + pdf.string() + "' 'file://" + fs::absolute(files_.html).string() +
                           "' >/dev/null 2>&1 && pdftotext '" + pdf.string() + "' '" + txt.string() + "'";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  const std::string text = without_space(read(txt));
-  const std::string html = read(files_.html);
+  const std::string text = without_space(slurp(txt));
+  const std::string html = slurp(files_.html);
   int headers = 0;
   for (auto at = html.find("<th>"); at != std::string::npos; at = html.find("<th>", at + 1)) {
     const auto end = html.find("</th>", at);
@@ -219,7 +215,7 @@ TEST_F(ReportRender, ChromiumPrintsEveryColumnAndNoteToA4) {
   // The "what a target costs" table, by name: target → cheapest grid → its cost.
   for (const char* header : {"targetRDE", "cheapestΔ*", "cells×iterations", "CPUs", "peakMB", "itsRDE"})
     EXPECT_NE(text.find(header), std::string::npos) << "cost-table column missing from the PDF: " << header;
-  const auto rows = read_csv_rows(read(dir_ / "series.csv"));
+  const auto rows = read_csv_rows(slurp(dir_ / "series.csv"));
   ASSERT_EQ(rows.size(), 3u);
   const auto col = std::find(rows[0].begin(), rows[0].end(), "verdict_reasons") - rows[0].begin();
   for (std::size_t r = 1; r < rows.size(); ++r) {
@@ -267,7 +263,7 @@ TEST(ReportRenderEnsembles, ChromiumRendersTheBudgetChart) {
                           " --user-data-dir='" + (dir / "profile").string() + "' --dump-dom 'file://" +
                           fs::absolute(files.html).string() + "' > '" + dom.string() + "' 2>/dev/null";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  const std::string text = read(dom);
+  const std::string text = slurp(dom);
   EXPECT_EQ(count_of(text, "<svg"), static_cast<int>(files.svg.size()));
   EXPECT_NE(text.find("Ensembles and uncertainty budget"), std::string::npos);
   EXPECT_NE(text.find("Uncertainty budget, ensemble snap"), std::string::npos);

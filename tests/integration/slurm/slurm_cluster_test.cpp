@@ -25,6 +25,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "project_paths.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
@@ -34,13 +36,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using gridfree::test_support::run_command;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
-const fs::path kFake = kSource / "tests/fixtures/fake_worker.sh";
-const fs::path kCluster = kSource / "tests/integration/slurm/slurm_cluster.sh";
+using gridfree::test_support::kFakeWorker;
+using gridfree::test_support::kGridfreeExe;
+using gridfree::test_support::kSourceDir;
+using gridfree::test_support::quickstart_document;
+const fs::path kCluster = kSourceDir / "tests/integration/slurm/slurm_cluster.sh";
 
 using gridfree::test_support::shell_quote;
-std::string quote(const std::string& s) { return shell_quote(s); }
 
 std::vector<std::string> lines_of(const fs::path& file) {
   std::vector<std::string> out;
@@ -71,10 +73,11 @@ class SlurmCluster : public ::testing::Test {
     work_ = dir_ / "with space";  // every path the batch script sees has a space in it
     fs::create_directories(work_);
     started_ = true;  // TearDown stops whatever did start
-    const auto r = run_command(quote(kCluster.string()) + " start " + quote(cluster_.string()), dir_ / "start.err");
+    const auto r =
+        run_command(shell_quote(kCluster.string()) + " start " + shell_quote(cluster_.string()), dir_ / "start.err");
     ASSERT_EQ(r.exit_code, 0) << "cluster did not start: " << r.err;
     setenv("SLURM_CONF", (cluster_ / "slurm.conf").c_str(), 1);
-    setenv("GRIDFREE_WORKER", kFake.c_str(), 1);
+    setenv("GRIDFREE_WORKER", kFakeWorker.c_str(), 1);
     setenv("GRIDFREE_FAKE_LOG", (dir_ / "solves.log").c_str(), 1);
     unsetenv("GRIDFREE_FAKE_SLEEP");
   }
@@ -84,21 +87,22 @@ class SlurmCluster : public ::testing::Test {
         kill(pid, SIGKILL);
         waitpid(pid, nullptr, 0);
       }
-    if (started_) std::system((quote(kCluster.string()) + " stop " + quote(cluster_.string())).c_str());
+    if (started_) std::system((shell_quote(kCluster.string()) + " stop " + shell_quote(cluster_.string())).c_str());
   }
 
   fs::path db() const { return work_ / "g.sqlite"; }
 
   // gridfree ARGS in the work folder; stdout + stderr.
   gridfree::test_support::CommandRun gridfree(const std::string& args, const std::string& env = "") {
-    return run_command("cd " + quote(work_.string()) + " && " + env + " " + quote(kGridfree.string()) + " " + args +
-                           " 2>&1",
+    return run_command("cd " + shell_quote(work_.string()) + " && " + env + " " + shell_quote(kGridfreeExe.string()) +
+                           " " + args + " 2>&1",
                        dir_ / "gridfree.err");
   }
 
   pid_t spawn_gridfree(const std::string& args, const std::string& env) {
-    std::string line = "cd " + quote(work_.string()) + " && " + env + " exec " + quote(kGridfree.string()) + " " +
-                       args + " >>" + quote((dir_ / "spawned.log").string()) + " 2>&1";
+    std::string line = "cd " + shell_quote(work_.string()) + " && " + env + " exec " +
+                       shell_quote(kGridfreeExe.string()) + " " + args + " >>" +
+                       shell_quote((dir_ / "spawned.log").string()) + " 2>&1";
     std::vector<std::string> words = {"/bin/sh", "-c", line};
     std::vector<char*> argv;
     for (auto& w : words) argv.push_back(w.data());
@@ -110,7 +114,7 @@ class SlurmCluster : public ::testing::Test {
   }
 
   std::string sql(const std::string& query) {
-    auto r = run_command("sqlite3 " + quote(db().string()) + " " + quote(query), dir_ / "sql.err");
+    auto r = run_command("sqlite3 " + shell_quote(db().string()) + " " + shell_quote(query), dir_ / "sql.err");
     while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
     return r.out;
   }
@@ -122,8 +126,7 @@ class SlurmCluster : public ::testing::Test {
   // A study of `cases` (the fake worker's modes) on four grids each.
   fs::path study(const std::string& name, const std::vector<std::string>& cases,
                const nlohmann::json& slurm = nullptr) {
-    std::ifstream in(kSource / "studies/quickstart.json");
-    auto doc = nlohmann::json::parse(in);
+    auto doc = quickstart_document();
     doc["name"] = name;
     const auto pc1 = doc["cases"]["PC1"];
     doc["cases"] = nlohmann::json::object();
@@ -163,7 +166,8 @@ class SlurmCluster : public ::testing::Test {
 
 TEST_F(SlurmCluster, ArraysGiveTheLocalExecutorsResultsAndQuoteEveryPath) {
   const auto file = study("same", {"ok_a", "ok_b"});
-  auto r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 3");
+  auto r =
+      gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " --executor slurm -j 3");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 8);
   expect_each_job_solved_once(8);
@@ -177,7 +181,7 @@ TEST_F(SlurmCluster, ArraysGiveTheLocalExecutorsResultsAndQuoteEveryPath) {
   // The same study with the local executor: identical dp* to the last digit.
   const auto slurm_dp = sql("SELECT j.job_hash, quote(r.dp_star) FROM results r JOIN jobs j ON j.id = r.job_id ORDER BY 1");
   fs::rename(db(), work_ / "slurm.sqlite");
-  r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) + " -j 2");
+  r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " -j 2");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(sql("SELECT j.job_hash, quote(r.dp_star) FROM results r JOIN jobs j ON j.id = r.job_id ORDER BY 1"),
             slurm_dp);
@@ -185,7 +189,8 @@ TEST_F(SlurmCluster, ArraysGiveTheLocalExecutorsResultsAndQuoteEveryPath) {
 
 TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
   const auto file = study("adopt", {"ok_a", "ok_b"});
-  const std::string args = "run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 2";
+  const std::string args =
+      "run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " --executor slurm -j 2";
   const pid_t pid = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1.5");
   // Two done, two running, four pending: then the orchestrator dies.
   ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") >= 2; }, 60));
@@ -193,7 +198,7 @@ TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
   std::string shown;
   EXPECT_TRUE(wait_until(
       [&] {
-        shown = gridfree("status adopt --db " + quote(db().string())).out;
+        shown = gridfree("status adopt --db " + shell_quote(db().string())).out;
         return shown.find("RUNNING") != std::string::npos && shown.find("JobArrayTaskLimit") != std::string::npos;
       },
       10))
@@ -215,8 +220,8 @@ TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
 
 TEST_F(SlurmCluster, AKilledDaemonsJobsAreAdoptedByTheNextDaemon) {
   const auto file = study("daemon", {"ok_a", "ok_b"});
-  ASSERT_EQ(gridfree("submit " + quote(file.string()) + " --db " + quote(db().string())).exit_code, 0);
-  const std::string args = "daemon --db " + quote(db().string()) + " --executor slurm -j 2";
+  ASSERT_EQ(gridfree("submit " + shell_quote(file.string()) + " --db " + shell_quote(db().string())).exit_code, 0);
+  const std::string args = "daemon --db " + shell_quote(db().string()) + " --executor slurm -j 2";
   const pid_t first = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1");
   ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") >= 2; }, 60));
   kill(first, SIGKILL);
@@ -233,7 +238,8 @@ TEST_F(SlurmCluster, AKilledDaemonsJobsAreAdoptedByTheNextDaemon) {
 
 TEST_F(SlurmCluster, JobsSubmittedButNotRecordedAreFoundInTheQueue) {
   const auto file = study("unrecorded", {"ok_a"});
-  const std::string args = "run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 1";
+  const std::string args =
+      "run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " --executor slurm -j 1";
   const pid_t pid = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1");
   ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") >= 1; }, 60));
   kill(pid, SIGKILL);
@@ -249,7 +255,8 @@ TEST_F(SlurmCluster, JobsSubmittedButNotRecordedAreFoundInTheQueue) {
 
 TEST_F(SlurmCluster, JobsPurgedFromTheControllerAreResolvedFromTheRunFolder) {
   const auto file = study("purged", {"ok_a"});
-  const std::string args = "run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 4";
+  const std::string args =
+      "run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " --executor slurm -j 4";
   const pid_t pid = spawn_gridfree(args, "GRIDFREE_FAKE_SLEEP=1");
   ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM jobs WHERE external_id LIKE 'slurm:%'") == 4; }, 30));
   kill(pid, SIGKILL);
@@ -265,16 +272,17 @@ TEST_F(SlurmCluster, JobsPurgedFromTheControllerAreResolvedFromTheRunFolder) {
 
 TEST_F(SlurmCluster, ControllerDownAtSubmitAndMidStudyCostsNoAttempt) {
   const auto file = study("outage", {"ok_a"});
-  ASSERT_EQ(std::system((quote(kCluster.string()) + " ctld-stop " + quote(cluster_.string())).c_str()), 0);
+  ASSERT_EQ(std::system((shell_quote(kCluster.string()) + " ctld-stop " + shell_quote(cluster_.string())).c_str()), 0);
   const pid_t pid = spawn_gridfree(
-      "run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm -j 1", "GRIDFREE_FAKE_SLEEP=1");
+      "run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " --executor slurm -j 1",
+      "GRIDFREE_FAKE_SLEEP=1");
   std::this_thread::sleep_for(std::chrono::seconds(3));  // sbatch fails: controller unreachable
   EXPECT_EQ(count("SELECT COUNT(*) FROM jobs WHERE external_id IS NOT NULL"), 0);
-  ASSERT_EQ(std::system((quote(kCluster.string()) + " ctld-start " + quote(cluster_.string())).c_str()), 0);
+  ASSERT_EQ(std::system((shell_quote(kCluster.string()) + " ctld-start " + shell_quote(cluster_.string())).c_str()), 0);
   ASSERT_TRUE(wait_until([&] { return count("SELECT COUNT(*) FROM results") >= 1; }, 60));
-  ASSERT_EQ(std::system((quote(kCluster.string()) + " ctld-stop " + quote(cluster_.string())).c_str()), 0);
+  ASSERT_EQ(std::system((shell_quote(kCluster.string()) + " ctld-stop " + shell_quote(cluster_.string())).c_str()), 0);
   std::this_thread::sleep_for(std::chrono::seconds(3));  // squeue fails mid-study
-  ASSERT_EQ(std::system((quote(kCluster.string()) + " ctld-start " + quote(cluster_.string())).c_str()), 0);
+  ASSERT_EQ(std::system((shell_quote(kCluster.string()) + " ctld-start " + shell_quote(cluster_.string())).c_str()), 0);
   int status = 0;
   ASSERT_TRUE(wait_until([&] { return waitpid(pid, &status, WNOHANG) == pid; }, 90));
   EXPECT_EQ(WEXITSTATUS(status), 0) << lines_of(dir_ / "spawned.log").size();
@@ -286,17 +294,18 @@ TEST_F(SlurmCluster, ControllerDownAtSubmitAndMidStudyCostsNoAttempt) {
 TEST_F(SlurmCluster, ABadPartitionFailsFastWithSbatchsWordsAndRetryRecovers) {
   // The partition comes from the study's own "slurm" settings.
   const auto file = study("badpart", {"ok_a"}, {{"partition", "nope"}});
-  auto r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm");
+  auto r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " --executor slurm");
   EXPECT_EQ(r.exit_code, 3) << r.out;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE reason LIKE '%Invalid partition name specified%'"), 4)
       << sql("SELECT reason FROM results");
   EXPECT_EQ(count("SELECT MAX(attempts) FROM jobs"), 1);  // not tried twice
   EXPECT_TRUE(solves().empty());
-  r = gridfree("retry badpart --db " + quote(db().string()));
+  r = gridfree("retry badpart --db " + shell_quote(db().string()));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("requeued 4 failed job(s)"), std::string::npos) << r.out;
   // A flag overrides the study (profile < study < flags).
-  r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) + " --executor slurm --partition debug");
+  r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) +
+               " --executor slurm --partition debug");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 4);
   expect_each_job_solved_once(4);
@@ -305,7 +314,7 @@ TEST_F(SlurmCluster, ABadPartitionFailsFastWithSbatchsWordsAndRetryRecovers) {
 TEST_F(SlurmCluster, ANeverStartableJobFailsWithSlurmsReason) {
   const auto file = study("never", {"ok_a"});
   // Partition "short" allows 1 minute; the jobs ask for 5.
-  const auto r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) +
+  const auto r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) +
                           " --executor slurm --partition short --time 5");
   EXPECT_EQ(r.exit_code, 3) << r.out;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE reason LIKE '%Reason=PartitionTimeLimit%'"), 4)
@@ -318,7 +327,7 @@ TEST_F(SlurmCluster, TheTimeoutCountsRunTimeNotTimeInTheQueue) {
   // One at a time, 1.5 s each: the last waits ~5 s in the queue, longer than
   // the 3 s timeout, and must still converge.
   const auto file = study("queued", {"ok_a"});
-  const auto r = gridfree("run " + quote(file.string()) + " --db " + quote(db().string()) +
+  const auto r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) +
                               " --executor slurm -j 1 --timeout 3",
                           "GRIDFREE_FAKE_SLEEP=1.5");
   ASSERT_EQ(r.exit_code, 0) << r.out;
@@ -330,17 +339,16 @@ TEST_F(SlurmCluster, TheTimeoutCountsRunTimeNotTimeInTheQueue) {
 TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("slurm_test", "settings");
   std::ofstream(dir / "profile.json") << R"({"partition": "p", "mem_gb": 4})";
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+  auto doc = quickstart_document();
   std::ofstream(dir / "plain.json") << doc.dump();
   doc["slurm"] = {{"partition", "p"}};
   std::ofstream(dir / "with_slurm.json") << doc.dump();
   doc["slurm"] = {{"partiton", "p"}};
   std::ofstream(dir / "misspelt.json") << doc.dump();
-  const std::string db = " --db " + quote((dir / "g.sqlite").string());
+  const std::string db = " --db " + shell_quote((dir / "g.sqlite").string());
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"--executor slurm --slurm-profile " + quote((dir / "profile.json").string()), "slurm-profile.mem_gb"},
-      {"--executor slurm --slurm-profile " + quote((dir / "missing.json").string()), "--slurm-profile"},
+      {"--executor slurm --slurm-profile " + shell_quote((dir / "profile.json").string()), "slurm-profile.mem_gb"},
+      {"--executor slurm --slurm-profile " + shell_quote((dir / "missing.json").string()), "--slurm-profile"},
       {"--executor slurm --mem -5", "--mem"},
       {"--executor slurm --cpus-per-task 0", "--cpus-per-task"},
       {"--executor slurm --sbatch-arg=--array=1-9", "--sbatch-arg"},
@@ -349,14 +357,14 @@ TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
       {"", "/slurm"}};  // a study with Slurm settings, run locally
   for (const auto& [flags, field] : cases) {
     const auto file = dir / (flags.empty() ? "with_slurm.json" : "plain.json");
-    const auto r = run_command(quote(kGridfree.string()) + " run " + quote(file.string()) + db + " " + flags,
-                               dir / "err.txt");
+    const auto r = run_command(
+        shell_quote(kGridfreeExe.string()) + " run " + shell_quote(file.string()) + db + " " + flags, dir / "err.txt");
     EXPECT_EQ(r.exit_code, 2) << flags << ": " << r.err;
     EXPECT_NE(r.err.find(field), std::string::npos) << flags << ": " << r.err;
     EXPECT_FALSE(fs::exists(dir / "g.sqlite")) << flags;
   }
-  const auto r = run_command(quote(kGridfree.string()) + " run " + quote((dir / "misspelt.json").string()) + db +
-                                 " --executor slurm",
+  const auto r = run_command(shell_quote(kGridfreeExe.string()) + " run " +
+                                 shell_quote((dir / "misspelt.json").string()) + db + " --executor slurm",
                              dir / "err.txt");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("/slurm.partiton"), std::string::npos) << r.err;

@@ -22,7 +22,7 @@ Grid box(std::array<int, 3> n, std::array<bool, 3> periodic) {
   return g;
 }
 
-std::vector<double> random_field(std::size_t n, unsigned seed) {
+std::vector<double> uniform_random_field(std::size_t n, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<double> f(n);
@@ -52,7 +52,7 @@ TEST(SpectralFilter, EigenmodesDecayByExpNuLambda) {
 TEST(SpectralFilter, ConservesAndIsSymmetric) {
   const Grid g = box({12, 20, 6}, {true, false, true});
   SpectralFilter f(g, {0.02, 0.01, 0.03});
-  std::vector<double> a = random_field(g.cells(), 1), b = random_field(g.cells(), 2);
+  std::vector<double> a = uniform_random_field(g.cells(), 1), b = uniform_random_field(g.cells(), 2);
   long double sa = 0, sfa = 0;
   for (double v : a) sa += v;
   const std::vector<double> a0 = a, b0 = b;

@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "project_paths.h"
+#include "test_files.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -63,36 +66,30 @@ std::vector<fs::path> source_files(const fs::path& root) {
   return files;
 }
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
+using gridfree::test_support::kSourceDir;
+using gridfree::test_support::slurp;
 
 TEST(DocReferences, ScannerFlagsMissingDocumentsAndOutsidePaths) {
   const std::set<std::string> names = {"PHYSICS.md"};
-  EXPECT_TRUE(problems_in("see PHYSICS.md §3 and docs/PHYSICS.md", names, kSource).empty());
-  EXPECT_EQ(problems_in("see NOWHERE" + std::string(".md"), names, kSource).size(), 1u);
-  EXPECT_EQ(problems_in("see docs/" + std::string("nowhere.md"), names, kSource).size(), 1u);
-  EXPECT_EQ(problems_in("read " + kOutside[0] + "/X", names, kSource).size(), 1u);
+  EXPECT_TRUE(problems_in("see PHYSICS.md §3 and docs/PHYSICS.md", names, kSourceDir).empty());
+  EXPECT_EQ(problems_in("see NOWHERE" + std::string(".md"), names, kSourceDir).size(), 1u);
+  EXPECT_EQ(problems_in("see docs/" + std::string("nowhere.md"), names, kSourceDir).size(), 1u);
+  EXPECT_EQ(problems_in("read " + kOutside[0] + "/X", names, kSourceDir).size(), 1u);
 }
 
 TEST(DocReferences, EveryNamedDocumentExistsAndNothingPointsOutside) {
-  ASSERT_TRUE(fs::is_directory(kSource / "docs")) << kSource;
-  const auto files = source_files(kSource);
+  ASSERT_TRUE(fs::is_directory(kSourceDir / "docs")) << kSourceDir;
+  const auto files = source_files(kSourceDir);
   std::set<std::string> md_names;
   for (const auto& f : files)
     if (f.extension() == ".md") md_names.insert(f.filename().string());
   ASSERT_GT(md_names.size(), 5u);  // the scan found the docs
   std::vector<Finding> findings;
   for (const auto& f : files) {
-    const std::string text = read_all(f);
+    const std::string text = slurp(f);
     if (!is_text(text)) continue;
-    for (auto& what : problems_in(text, md_names, kSource))
-      findings.push_back({fs::relative(f, kSource).string(), what});
+    for (auto& what : problems_in(text, md_names, kSourceDir))
+      findings.push_back({fs::relative(f, kSourceDir).string(), what});
   }
   for (const auto& f : findings) ADD_FAILURE() << f.file << ": " << f.what;
   EXPECT_TRUE(findings.empty());

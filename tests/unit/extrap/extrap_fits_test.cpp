@@ -9,6 +9,7 @@
 #include "extrap/mixed_fit.h"
 #include "extrap/power_fit.h"
 #include "extrap/series.h"
+#include "expect_relative.h"
 #include "extrap_test_data.h"
 
 namespace gridfree {
@@ -19,9 +20,7 @@ namespace {
 // the fits (~1e3 for these grids), leaving far below 1e-10.
 constexpr double kExact = 1e-10;
 
-void expect_rel(double actual, double expected, double tol) {
-  EXPECT_NEAR(actual, expected, tol * std::max(1.0, std::fabs(expected)));
-}
+using test_support::expect_rel;
 
 TEST(ExtrapLeastSquares, StraightLineMatchesClosedForm) {
   // Weighted line fit y = a + b x; closed form with weighted means

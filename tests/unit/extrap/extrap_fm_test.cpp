@@ -11,14 +11,13 @@
 
 #include "core/input_error.h"
 #include "extrap/extrapolation.h"
+#include "expect_relative.h"
 #include "extrap_test_data.h"
 
 namespace gridfree {
 namespace {
 
-void expect_rel(double actual, double expected, double tol) {
-  EXPECT_NEAR(actual, expected, tol * std::max(1.0, std::fabs(expected)));
-}
+using test_support::expect_rel;
 
 // PHYSICS.md §8 recomputed from the reported f̂: σ_RE, R_f, Fs, U_i, RDE_i.
 void expect_fm_uncertainties_consistent(const std::vector<double>& h_in, const ExtrapolationResult& r) {

@@ -17,14 +17,14 @@
 namespace gridfree {
 namespace {
 
-constexpr double kExact = 1158.8;
+constexpr double kExactF0 = 1158.8;
 
 TEST(ExtrapOscillatory, SeriesLooksLikeThePapers) {
   const auto h = test::oscillatory_h();
   const auto f = test::oscillatory_f(h);
   ASSERT_EQ(h.size(), 18u);
   const auto [lo, hi] = std::minmax_element(f.begin(), f.end());
-  EXPECT_LT((*hi - *lo) / kExact, 0.005);  // all grids within 0.5 % of each other
+  EXPECT_LT((*hi - *lo) / kExactF0, 0.005);  // all grids within 0.5 % of each other
   // Oscillatory grid to grid: the differences change sign many times.
   int sign_changes = 0;
   for (std::size_t i = 2; i < f.size(); ++i)
@@ -39,7 +39,7 @@ TEST(ExtrapOscillatory, RegressionIsStableWhereGciScatters) {
 
   // The least-squares value is within its own uncertainty of the exact value.
   const double u_fine = *r.grids.front().u;
-  EXPECT_LE(std::fabs(*r.f0 - kExact), u_fine) << "f0 = " << *r.f0 << ", U = " << u_fine;
+  EXPECT_LE(std::fabs(*r.f0 - kExactF0), u_fine) << "f0 = " << *r.f0 << ", U = " << u_fine;
   for (const auto& g : r.grids) EXPECT_LT(*g.rde, 0.04);  // paper: RDE < 4 %
 
   // The GCI extrapolations of consecutive triplets scatter far beyond it.
@@ -64,7 +64,7 @@ TEST(ExtrapOscillatory, PinnedValues) {
   // The power law's best order (≈ 6.63) is outside [0.5, 2.1]: mixed fit.
   EXPECT_EQ(*r.method, "mixed");
   EXPECT_NEAR(*r.power->p, 6.634817633891972, 1e-7 * 6.63);
-  EXPECT_NEAR(*r.f0, 1158.883347732073, 1e-7 * kExact);
+  EXPECT_NEAR(*r.f0, 1158.883347732073, 1e-7 * kExactF0);
   EXPECT_NEAR(*r.sigma_re, 0.17767900320617175, 1e-7 * 0.178);
   // σ_RE/R_f > 1: by the paper's criterion the fit is poor for this series,
   // so Fs = 3σ/R_f > 1.25 widens U accordingly.

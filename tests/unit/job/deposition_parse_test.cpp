@@ -12,14 +12,14 @@ namespace {
 
 using nlohmann::json;
 
-std::vector<Problem> problems_of(const json& dep) {
+std::vector<Problem> deposition_problems(const json& dep) {
   ProblemList problems;
   parse_deposition(dep, "/numerics/deposition", problems);
   return problems.problems();
 }
 
 bool refused_at(const json& dep, const std::string& where) {
-  const auto p = problems_of(dep);
+  const auto p = deposition_problems(dep);
   return std::any_of(p.begin(), p.end(), [&](const Problem& q) { return q.where == where; });
 }
 
@@ -65,8 +65,9 @@ TEST(DepositionParse, ContradictionsAreRefusedWithTheirField) {
   EXPECT_TRUE(refused_at({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"sampling", "gaussian"}}, at + "sampling"));
   EXPECT_TRUE(refused_at({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"truncation_sigmas", 4}}, at + "truncation_sigmas"));
   EXPECT_TRUE(refused_at({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "steps"}, {"steps", 0}}, at + "steps"));
-  EXPECT_TRUE(problems_of({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "steps"}, {"steps", 3}}).empty());
-  EXPECT_TRUE(problems_of({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"pre_deposition", "gaussian"}}).empty());
+  EXPECT_TRUE(
+      deposition_problems({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "steps"}, {"steps", 3}}).empty());
+  EXPECT_TRUE(deposition_problems({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"pre_deposition", "gaussian"}}).empty());
 }
 
 TEST(DepositionParse, GaussianIntegrationIsAcceptedRecordedAndHasNoSteps) {
@@ -80,7 +81,7 @@ TEST(DepositionParse, GaussianIntegrationIsAcceptedRecordedAndHasNoSteps) {
   EXPECT_FALSE(j.contains("steps"));
   const std::string at = "/numerics/deposition/";
   EXPECT_TRUE(refused_at({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "gaussian"}, {"steps", 8}}, at + "steps"));
-  const auto p = problems_of({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "heat"}});
+  const auto p = deposition_problems({{"kind", "diffusion"}, {"fwhm_dp", 6}, {"integration", "heat"}});
   ASSERT_EQ(p.size(), 1u);
   EXPECT_EQ(p[0].where, at + "integration");
   EXPECT_NE(p[0].reason.find("steps, exact, gaussian"), std::string::npos) << p[0].reason;

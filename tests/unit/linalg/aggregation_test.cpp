@@ -11,6 +11,7 @@
 
 #include "linalg/model_problems.h"
 #include "linalg/stencil_ops.h"
+#include "test_grids.h"
 
 namespace gridfree {
 namespace {
@@ -31,20 +32,14 @@ Dense dense(const Stencil7& s) {
   return a;
 }
 
-Grid make_grid(std::array<int, 3> n, std::array<bool, 3> periodic) {
-  Grid g;
-  g.n = n;
-  g.length = {1, 1, 1};
-  g.periodic = periodic;
-  return g;
-}
+using test_support::box_grid;
 
 class LinalgGalerkin
     : public ::testing::TestWithParam<std::tuple<std::array<int, 3>, std::array<bool, 3>>> {};
 
 TEST_P(LinalgGalerkin, CoarseOperatorIsPtAP) {
   const auto& [n, periodic] = GetParam();
-  Grid g = make_grid(n, periodic);
+  Grid g = box_grid(n, periodic);
   g.length = {double(n[0]), double(n[1]), double(n[2])};  // cubic cells: no semi-coarsening
   std::vector<double> kappa(g.cells());
   for (std::size_t c = 0; c < kappa.size(); ++c) kappa[c] = 1 + std::fmod(0.37 * double(c), 3.0);
@@ -96,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(
         std::make_tuple(std::array<int, 3>{6, 3, 5}, std::array<bool, 3>{false, true, false})));
 
 TEST(LinalgAggregation, SingularStaysSingular) {
-  const Grid g = make_grid({6, 5, 4}, {true, true, true});
+  const Grid g = box_grid({6, 5, 4}, {true, true, true});
   const Stencil7 fine = diffusion_stencil(g, bed_coefficient(g, 1e3), DirichletSides{});
   ASSERT_TRUE(stencil_is_singular(fine));
   Stencil7 s = fine;
@@ -112,7 +107,7 @@ TEST(LinalgAggregation, SingularStaysSingular) {
 
 TEST(LinalgAggregation, SemiCoarsensAlongStrongAxisOnly) {
   // Δ = (1, 1/16, 1/16): a_x = ΔyΔz/Δx = 1/256, a_y = a_z = 1, so x is weak.
-  Grid g = make_grid({8, 16, 4}, {true, false, true});
+  Grid g = box_grid({8, 16, 4}, {true, false, true});
   g.length = {8, 1, 0.25};
   const Stencil7 s = diffusion_stencil(g, std::vector<double>(g.cells(), 1.0),
                                        DirichletSides{false, false, false, true});

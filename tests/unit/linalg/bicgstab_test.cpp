@@ -16,19 +16,14 @@
 
 #include "linalg/model_problems.h"
 #include "linalg/stencil_ops.h"
+#include "test_grids.h"
 
 namespace gridfree {
 namespace {
 
-Grid make_grid(std::array<int, 3> n, std::array<bool, 3> periodic) {
-  Grid g;
-  g.n = n;
-  g.length = {1, 1, 1};
-  g.periodic = periodic;
-  return g;
-}
+using test_support::box_grid;
 
-std::vector<double> manufactured(const Grid& g) {
+std::vector<double> manufactured_sine(const Grid& g) {
   std::vector<double> phi(g.cells());
   for (std::size_t c = 0; c < phi.size(); ++c) phi[c] = std::sin(0.37 * double(c)) + 0.5;
   return phi;
@@ -40,7 +35,7 @@ double max_error(const std::vector<double>& a, const std::vector<double>& b) {
   return e;
 }
 
-struct Case {
+struct ConvectionDiffusionCase {
   const char* name;
   std::array<int, 3> n;
   std::array<bool, 3> periodic;
@@ -50,15 +45,15 @@ struct Case {
 };
 
 class LinalgConvectionDiffusion
-    : public ::testing::TestWithParam<std::tuple<Case, GeneralPreconditioner>> {};
+    : public ::testing::TestWithParam<std::tuple<ConvectionDiffusionCase, GeneralPreconditioner>> {};
 
 TEST_P(LinalgConvectionDiffusion, RecoversManufacturedSolution) {
   const auto& [c, preconditioner] = GetParam();
-  const Grid g = make_grid(c.n, c.periodic);
+  const Grid g = box_grid(c.n, c.periodic);
   Stencil7 s = convection_diffusion_stencil(
       g, c.velocity, c.diffusivity, DirichletSides{true, true, true, true, true, true}, c.shift);
   ASSERT_GT(stencil_asymmetry(s), 1e-3) << "the test system must be non-symmetric";
-  const std::vector<double> exact = manufactured(g);
+  const std::vector<double> exact = manufactured_sine(g);
   stencil_apply(s, exact, s.b);
   std::vector<double> phi(g.cells(), 0.0);
   GeneralSolverOptions options;
@@ -81,15 +76,15 @@ INSTANTIATE_TEST_SUITE_P(
     Systems, LinalgConvectionDiffusion,
     ::testing::Combine(
         ::testing::Values(
-            Case{"low_peclet", {10, 10, 10}, {false, false, false}, {1, 0.5, 0.2}, 1.0, 0},
-            Case{"high_peclet", {12, 12, 6}, {false, false, false}, {200, -100, 50}, 1.0, 0},
-            Case{"periodic_xz_momentum_like",
+            ConvectionDiffusionCase{"low_peclet", {10, 10, 10}, {false, false, false}, {1, 0.5, 0.2}, 1.0, 0},
+            ConvectionDiffusionCase{"high_peclet", {12, 12, 6}, {false, false, false}, {200, -100, 50}, 1.0, 0},
+            ConvectionDiffusionCase{"periodic_xz_momentum_like",
                  {8, 20, 4},
                  {true, false, true},
                  {5, 40, 0},
                  0.1,
                  50.0},
-            Case{"odd_periodic", {7, 13, 5}, {true, true, true}, {30, 10, -20}, 0.5, 1.0}),
+            ConvectionDiffusionCase{"odd_periodic", {7, 13, 5}, {true, true, true}, {30, 10, -20}, 0.5, 1.0}),
         ::testing::Values(GeneralPreconditioner::kGaussSeidel, GeneralPreconditioner::kJacobi)),
     [](const auto& param_info) {
       return std::string(std::get<0>(param_info.param).name) +
@@ -97,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(LinalgBicgstab, ZeroRightHandSide) {
-  const Grid g = make_grid({5, 5, 5}, {false, false, false});
+  const Grid g = box_grid({5, 5, 5}, {false, false, false});
   const Stencil7 s = convection_diffusion_stencil(
       g, {3, 2, 1}, 1.0, DirichletSides{true, true, true, true, true, true});
   std::vector<double> phi(g.cells(), 0.0);
@@ -107,10 +102,10 @@ TEST(LinalgBicgstab, ZeroRightHandSide) {
 }
 
 TEST(LinalgBicgstab, IterationLimitReported) {
-  const Grid g = make_grid({16, 16, 16}, {false, false, false});
+  const Grid g = box_grid({16, 16, 16}, {false, false, false});
   Stencil7 s = convection_diffusion_stencil(g, {100, 50, 0}, 1.0,
                                             DirichletSides{true, true, true, true, true, true});
-  stencil_apply(s, manufactured(g), s.b);
+  stencil_apply(s, manufactured_sine(g), s.b);
   std::vector<double> phi(g.cells(), 0.0);
   const LinearSolveStats stats = solve_general(s, phi, {1e-14, 2});
   EXPECT_LE(stats.iterations, 2);
@@ -121,7 +116,7 @@ TEST(LinalgBicgstab, IterationLimitReported) {
 TEST(LinalgBicgstab, NeverReturnsNaN) {
   // A singular, inconsistent system (pure Neumann diffusion, b with a
   // non-zero mean): no solution exists; the solver must stop without NaN.
-  const Grid g = make_grid({6, 6, 6}, {true, true, true});
+  const Grid g = box_grid({6, 6, 6}, {true, true, true});
   Stencil7 s = convection_diffusion_stencil(g, {0, 0, 0}, 1.0, DirichletSides{});
   std::fill(s.b.begin(), s.b.end(), 1.0);
   std::vector<double> phi(g.cells(), 0.0);

@@ -18,17 +18,12 @@
 #include "linalg/model_problems.h"
 #include "linalg/stencil_ops.h"
 #include "linalg/vector_ops.h"
+#include "test_grids.h"
 
 namespace gridfree {
 namespace {
 
-Grid make_grid(std::array<int, 3> n, std::array<double, 3> length, std::array<bool, 3> periodic) {
-  Grid g;
-  g.n = n;
-  g.length = length;
-  g.periodic = periodic;
-  return g;
-}
+using test_support::box_grid;
 
 std::vector<double> manufactured(const Grid& g) {
   std::vector<double> phi(g.cells());
@@ -40,7 +35,7 @@ std::vector<double> manufactured(const Grid& g) {
   return phi;
 }
 
-double max_error(const std::vector<double>& a, const std::vector<double>& b) {
+double max_relative_error(const std::vector<double>& a, const std::vector<double>& b) {
   double e = 0, scale = 0;
   for (std::size_t c = 0; c < a.size(); ++c) {
     e = std::max(e, std::abs(a[c] - b[c]));
@@ -49,7 +44,7 @@ double max_error(const std::vector<double>& a, const std::vector<double>& b) {
   return e / scale;
 }
 
-struct Case {
+struct ManufacturedCase {
   const char* name;
   std::array<int, 3> n;
   std::array<double, 3> length;
@@ -64,11 +59,11 @@ std::vector<double> kappa_for(const Grid& g, double contrast) {
 }
 
 class LinalgManufacturedSolve
-    : public ::testing::TestWithParam<std::tuple<Case, SymmetricPreconditioner>> {};
+    : public ::testing::TestWithParam<std::tuple<ManufacturedCase, SymmetricPreconditioner>> {};
 
 TEST_P(LinalgManufacturedSolve, RecoversExactSolution) {
   const auto& [c, preconditioner] = GetParam();
-  const Grid g = make_grid(c.n, c.length, c.periodic);
+  const Grid g = box_grid(c.n, c.length, c.periodic);
   Stencil7 s = diffusion_stencil(g, kappa_for(g, c.contrast), c.dirichlet);
   const std::vector<double> exact = manufactured(g);
   stencil_apply(s, exact, s.b);
@@ -81,7 +76,7 @@ TEST_P(LinalgManufacturedSolve, RecoversExactSolution) {
   EXPECT_TRUE(stats.converged) << c.name << " residual " << stats.final_residual;
   EXPECT_LE(stats.final_residual, 1e-13);
   EXPECT_FALSE(solver.singular());
-  EXPECT_LT(max_error(phi, exact), 1e-8) << c.name;
+  EXPECT_LT(max_relative_error(phi, exact), 1e-8) << c.name;
   if (preconditioner == SymmetricPreconditioner::kMultigrid) {
     EXPECT_GE(solver.level_sizes().size(), 2u) << c.name;
   }
@@ -95,16 +90,16 @@ INSTANTIATE_TEST_SUITE_P(
     Grids, LinalgManufacturedSolve,
     ::testing::Combine(
         ::testing::Values(
-            Case{"periodic_xz_outflow", {8, 16, 4}, {1, 2, 0.5}, {true, false, true}, kTopOnly, 1},
-            Case{"all_dirichlet", {9, 9, 9}, {1, 1, 1}, {false, false, false}, kAll, 1},
-            Case{"mixed", {6, 10, 7}, {1, 1, 1}, {true, false, false}, kBottomTop, 1},
-            Case{"anisotropic_cells", {8, 12, 6}, {4, 1, 0.5}, {true, false, true}, kTopOnly, 1},
-            Case{"odd_sizes", {7, 13, 5}, {0.7, 1.3, 0.5}, {true, false, true}, kTopOnly, 1},
-            Case{"one_cell_z", {9, 15, 1}, {1, 2, 0.1}, {true, false, true}, kTopOnly, 1},
-            Case{"bed_contrast_1e3", {10, 30, 6}, {3, 20, 1}, {true, false, true}, kTopOnly, 1e3},
-            Case{"odd_periodic_bed", {7, 21, 3}, {3, 20, 1}, {true, false, true}, kTopOnly, 1e2},
-            Case{"aspect_ratio_10", {10, 20, 8}, {10, 2, 8}, {true, false, true}, kTopOnly, 1},
-            Case{"bed_contrast_1e6", {12, 40, 4}, {3, 20, 1}, {true, false, true}, kTopOnly, 1e6}),
+            ManufacturedCase{"periodic_xz_outflow", {8, 16, 4}, {1, 2, 0.5}, {true, false, true}, kTopOnly, 1},
+            ManufacturedCase{"all_dirichlet", {9, 9, 9}, {1, 1, 1}, {false, false, false}, kAll, 1},
+            ManufacturedCase{"mixed", {6, 10, 7}, {1, 1, 1}, {true, false, false}, kBottomTop, 1},
+            ManufacturedCase{"anisotropic_cells", {8, 12, 6}, {4, 1, 0.5}, {true, false, true}, kTopOnly, 1},
+            ManufacturedCase{"odd_sizes", {7, 13, 5}, {0.7, 1.3, 0.5}, {true, false, true}, kTopOnly, 1},
+            ManufacturedCase{"one_cell_z", {9, 15, 1}, {1, 2, 0.1}, {true, false, true}, kTopOnly, 1},
+            ManufacturedCase{"bed_contrast_1e3", {10, 30, 6}, {3, 20, 1}, {true, false, true}, kTopOnly, 1e3},
+            ManufacturedCase{"odd_periodic_bed", {7, 21, 3}, {3, 20, 1}, {true, false, true}, kTopOnly, 1e2},
+            ManufacturedCase{"aspect_ratio_10", {10, 20, 8}, {10, 2, 8}, {true, false, true}, kTopOnly, 1},
+            ManufacturedCase{"bed_contrast_1e6", {12, 40, 4}, {3, 20, 1}, {true, false, true}, kTopOnly, 1e6}),
         ::testing::Values(SymmetricPreconditioner::kMultigrid, SymmetricPreconditioner::kJacobi)),
     [](const auto& param_info) {
       return std::string(std::get<0>(param_info.param).name) +
@@ -116,7 +111,7 @@ INSTANTIATE_TEST_SUITE_P(
 class LinalgSingularSolve : public ::testing::TestWithParam<SymmetricPreconditioner> {};
 
 TEST_P(LinalgSingularSolve, ZeroMeanSolution) {
-  const Grid g = make_grid({7, 13, 5}, {1, 2, 1}, {true, true, true});
+  const Grid g = box_grid({7, 13, 5}, {1, 2, 1}, {true, true, true});
   Stencil7 s = diffusion_stencil(g, bed_coefficient(g, 100), DirichletSides{});
   std::vector<double> exact = manufactured(g);
   remove_mean(exact);
@@ -133,7 +128,7 @@ TEST_P(LinalgSingularSolve, ZeroMeanSolution) {
   EXPECT_TRUE(stats.converged) << stats.final_residual;
   // Mean of φ is removed: round-off of a sum of ~455 O(1) values.
   EXPECT_NEAR(sum(phi) / double(phi.size()), 0.0, 1e-13);
-  EXPECT_LT(max_error(phi, exact), 1e-8);
+  EXPECT_LT(max_relative_error(phi, exact), 1e-8);
 }
 
 INSTANTIATE_TEST_SUITE_P(Preconditioners, LinalgSingularSolve,
@@ -141,7 +136,7 @@ INSTANTIATE_TEST_SUITE_P(Preconditioners, LinalgSingularSolve,
                                            SymmetricPreconditioner::kJacobi));
 
 TEST(LinalgSymmetricSolver, ZeroRightHandSideGivesZero) {
-  const Grid g = make_grid({4, 4, 4}, {1, 1, 1}, {false, false, false});
+  const Grid g = box_grid({4, 4, 4}, {1, 1, 1}, {false, false, false});
   const Stencil7 s = diffusion_stencil(g, std::vector<double>(g.cells(), 1.0), kAll);
   std::vector<double> phi(g.cells(), 0.0);
   const LinearSolveStats stats = solve_symmetric(s, phi, {});
@@ -151,7 +146,7 @@ TEST(LinalgSymmetricSolver, ZeroRightHandSideGivesZero) {
 }
 
 TEST(LinalgSymmetricSolver, ResetupWithNewCoefficientsReusesHierarchy) {
-  const Grid g = make_grid({12, 24, 6}, {1, 2, 0.5}, {true, false, true});
+  const Grid g = box_grid({12, 24, 6}, {1, 2, 0.5}, {true, false, true});
   SymmetricSolverOptions options;
   options.multigrid.coarsest_cells = 30;
   SymmetricSolver solver(options);
@@ -162,20 +157,20 @@ TEST(LinalgSymmetricSolver, ResetupWithNewCoefficientsReusesHierarchy) {
     std::vector<double> phi(g.cells(), 0.0);
     const LinearSolveStats stats = solver.solve(s, phi, {1e-12, 500});
     EXPECT_TRUE(stats.converged) << contrast;
-    EXPECT_LT(max_error(phi, exact), 1e-8) << contrast;
+    EXPECT_LT(max_relative_error(phi, exact), 1e-8) << contrast;
   }
   // Then a different grid with the same solver object.
-  const Grid g2 = make_grid({7, 13, 5}, {0.7, 1.3, 0.5}, {true, false, true});
+  const Grid g2 = box_grid({7, 13, 5}, {0.7, 1.3, 0.5}, {true, false, true});
   Stencil7 s2 = diffusion_stencil(g2, bed_coefficient(g2, 1e2), kTopOnly);
   const std::vector<double> exact2 = manufactured(g2);
   stencil_apply(s2, exact2, s2.b);
   std::vector<double> phi2(g2.cells(), 0.0);
   EXPECT_TRUE(solver.solve(s2, phi2, {1e-12, 500}).converged);
-  EXPECT_LT(max_error(phi2, exact2), 1e-8);
+  EXPECT_LT(max_relative_error(phi2, exact2), 1e-8);
 }
 
 TEST(LinalgSymmetricSolver, FreeFunctionMatchesClassAndReportsStatistics) {
-  const Grid g = make_grid({16, 32, 8}, {1, 2, 0.5}, {true, false, true});
+  const Grid g = box_grid({16, 32, 8}, {1, 2, 0.5}, {true, false, true});
   Stencil7 s = diffusion_stencil(g, bed_coefficient(g, 1e3), kTopOnly);
   stencil_apply(s, manufactured(g), s.b);
   std::vector<double> a(g.cells(), 0.0), b(g.cells(), 0.0);
@@ -194,7 +189,7 @@ TEST(LinalgSymmetricSolver, FreeFunctionMatchesClassAndReportsStatistics) {
 }
 
 TEST(LinalgSymmetricSolver, HitsIterationLimitWithoutClaimingConvergence) {
-  const Grid g = make_grid({16, 32, 8}, {1, 2, 0.5}, {true, false, true});
+  const Grid g = box_grid({16, 32, 8}, {1, 2, 0.5}, {true, false, true});
   Stencil7 s = diffusion_stencil(g, bed_coefficient(g, 1e3), kTopOnly);
   stencil_apply(s, manufactured(g), s.b);
   SymmetricSolverOptions options;
@@ -208,7 +203,7 @@ TEST(LinalgSymmetricSolver, HitsIterationLimitWithoutClaimingConvergence) {
 }
 
 TEST(LinalgSymmetricSolver, RejectsInvalidStencil) {
-  const Grid g = make_grid({4, 4, 4}, {1, 1, 1}, {false, false, false});
+  const Grid g = box_grid({4, 4, 4}, {1, 1, 1}, {false, false, false});
   Stencil7 s = diffusion_stencil(g, std::vector<double>(g.cells(), 1.0), kAll);
   s.an[g.index(1, 3, 1)] = 2.0;  // across the non-periodic y-high side
   std::vector<double> phi(g.cells(), 0.0);

@@ -10,22 +10,14 @@
 
 #include "particle_checks.h"
 #include "particles/generators.h"
+#include "sscp_bed_case.h"
 
 namespace gridfree {
 namespace {
 
-CaseSpec bed_case() {
-  CaseSpec c;
-  c.domain_dp = {16, 40, 8};
-  c.particle_diameter_cm = 0.3256;
-  const BoundarySpec wall{BoundaryKind::kWall, 0, 0};
-  c.boundaries[0] = {wall, wall};
-  c.boundaries[2] = {wall, wall};
-  c.boundaries[1] = {BoundarySpec{BoundaryKind::kMassInflow, 219, 0}, BoundarySpec{BoundaryKind::kPressureOutflow, 0, 0}};
-  return c;
-}
+using test_support::sscp_bed_case;
 
-GeneratorSpec sscp(const nlohmann::json& extra) {
+GeneratorSpec sscp_with(const nlohmann::json& extra) {
   nlohmann::json p = {{"kind", "sscp_like"}, {"seed", 3},  {"bed_height_dp", 20}, {"solids_fraction", 0.58},
                       {"bubbles", 1},        {"bubble_radius_dp", 4}};
   if (extra.is_object()) p.merge_patch(extra);
@@ -33,18 +25,18 @@ GeneratorSpec sscp(const nlohmann::json& extra) {
 }
 
 TEST(SscpLikeOptions, BubbleSolidsFractionSetsTheBubbleCount) {
-  const CaseSpec c = bed_case();
+  const CaseSpec c = sscp_bed_case();
   const double vp = std::numbers::pi / 6, v_bubble = 4.0 / 3.0 * std::numbers::pi * 64;  // in d³
-  const auto dilute = generate_particles(sscp({}), c).particles.size();
-  const auto denser = generate_particles(sscp({{"bubble_solids_fraction", 0.2}}), c).particles.size();
+  const auto dilute = generate_particles(sscp_with({}), c).particles.size();
+  const auto denser = generate_particles(sscp_with({{"bubble_solids_fraction", 0.2}}), c).particles.size();
   EXPECT_EQ(denser - dilute, static_cast<std::size_t>(std::lround(0.2 * v_bubble / vp)) -
                                  static_cast<std::size_t>(std::lround(0.01 * v_bubble / vp)));
 }
 
 TEST(SscpLikeOptions, RelaxationSweepsMoveParticlesKeepingCountAndNoOverlap) {
-  const CaseSpec c = bed_case();
-  const auto none = generate_particles(sscp({{"relaxation_sweeps", 0}}), c).particles;
-  const auto some = generate_particles(sscp({{"relaxation_sweeps", 20}}), c).particles;
+  const CaseSpec c = sscp_bed_case();
+  const auto none = generate_particles(sscp_with({{"relaxation_sweeps", 0}}), c).particles;
+  const auto some = generate_particles(sscp_with({{"relaxation_sweeps", 20}}), c).particles;
   ASSERT_EQ(none.size(), some.size());
   std::size_t moved = 0;
   for (std::size_t i = 0; i < none.size(); ++i) moved += none[i].x != some[i].x || none[i].y != some[i].y;

@@ -9,20 +9,12 @@
 
 #include "particle_checks.h"
 #include "particles/generators.h"
+#include "sscp_bed_case.h"
 
 namespace gridfree {
 namespace {
 
-CaseSpec bed_case() {
-  CaseSpec c;
-  c.domain_dp = {16, 40, 8};
-  c.particle_diameter_cm = 0.3256;
-  const BoundarySpec wall{BoundaryKind::kWall, 0, 0};
-  c.boundaries[0] = {wall, wall};
-  c.boundaries[2] = {wall, wall};
-  c.boundaries[1] = {BoundarySpec{BoundaryKind::kMassInflow, 219, 0}, BoundarySpec{BoundaryKind::kPressureOutflow, 0, 0}};
-  return c;
-}
+using test_support::sscp_bed_case;
 
 GeneratorSpec sscp(std::uint64_t seed, int bubbles) {
   return {"sscp_like",
@@ -32,7 +24,7 @@ GeneratorSpec sscp(std::uint64_t seed, int bubbles) {
 }
 
 TEST(SscpLikeGenerator, EmulsionFractionAndNoOverlap) {
-  const CaseSpec c = bed_case();
+  const CaseSpec c = sscp_bed_case();
   const GeneratedParticles out = generate_particles_with_report(sscp(1, 2), c);
   const auto& regions = out.regions;
   ASSERT_GE(regions.size(), 2u);
@@ -57,7 +49,7 @@ TEST(SscpLikeGenerator, EmulsionFractionAndNoOverlap) {
 }
 
 TEST(SscpLikeGenerator, DeterministicPerSeed) {
-  const CaseSpec c = bed_case();
+  const CaseSpec c = sscp_bed_case();
   const ParticleSet a = generate_particles(sscp(4, 1), c);
   const ParticleSet b = generate_particles(sscp(4, 1), c);
   const ParticleSet other = generate_particles(sscp(5, 1), c);
@@ -76,7 +68,7 @@ TEST(SscpLikeGenerator, TooDenseIsRefused) {
   GeneratorSpec g = sscp(1, 0);
   g.params["solids_fraction"] = 0.7;
   try {
-    generate_particles(g, bed_case());
+    generate_particles(g, sscp_bed_case());
     FAIL() << "accepted an emulsion denser than random close packing";
   } catch (const InputError& e) {
     EXPECT_EQ(e.problems()[0].where, "/generator/solids_fraction");

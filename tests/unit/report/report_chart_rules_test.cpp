@@ -22,10 +22,6 @@
 namespace gridfree {
 namespace {
 
-std::vector<SeriesSummary> summaries() {
-  return summarize_series(test::synthetic_study(), test::fake_extrapolation);
-}
-
 int svg_width(const std::string& svg) {
   std::smatch m;
   EXPECT_TRUE(std::regex_search(svg, m, std::regex("<svg [^>]*width=\"([0-9]+)\"")));
@@ -115,7 +111,7 @@ TEST(ChartRules, PointLabelsDoNotOverlap) {
 TEST(ChartRules, F0RoundedToTheDigitsUSupports) {
   EXPECT_EQ(format_with_uncertainty(1016.9954, 1.52), "1017.0 ± 1.5");
   EXPECT_EQ(format_with_uncertainty(1016.9413, 0.2712), "1016.94 ± 0.27");
-  const Chart chart = series_chart(summaries()[0], 0);
+  const Chart chart = series_chart(test::synthetic_summaries()[0], 0);
   EXPECT_NE(chart.subtitle.find("f_{0} = 1000.0 ± 5.5"), std::string::npos) << chart.subtitle;
   ASSERT_EQ(chart.hlines.size(), 1u);
   EXPECT_EQ(chart.hlines[0].label, "f_{0} = 1000.0 ± 5.5");
@@ -125,7 +121,7 @@ TEST(ChartRules, F0RoundedToTheDigitsUSupports) {
 // With a mixed fit chosen the subtitle's p is the rejected power law's and
 // says so; with the power law chosen it is the fit's own order.
 TEST(ChartRules, SubtitleSaysWhosePIsShown) {
-  auto s = summaries()[0];
+  auto s = test::synthetic_summaries()[0];
   ASSERT_TRUE(s.extrapolation.has_value());
   s.extrapolation->p = 2.13;
   s.extrapolation->method = "power";
@@ -140,7 +136,7 @@ TEST(ChartRules, SubtitleSaysWhosePIsShown) {
 // Series A has two triplets, both monotone with GCI_fine = 0.001, at
 // h1 = 0.5 and 1 (f = 1004, 1008): bands ±1.004 and ±1.008 at 1.02·h1.
 TEST(ChartRules, GciBandsByConvergenceType) {
-  const Chart chart = gci_chart(summaries()[0], 0);
+  const Chart chart = gci_chart(test::synthetic_summaries()[0], 0);
   const ChartSeries* band = nullptr;
   for (const auto& s : chart.series) {
     if (s.name.find("monotone") != std::string::npos) band = &s;
@@ -171,7 +167,7 @@ TEST(ChartRules, ParetoFrontExcludesDominatedPoints) {
 // every grid is on the front: A's 4 grids, B's 4 converged grids.
 TEST(ChartRules, SpeedAccuracyChartsPlotTheFront) {
   for (auto measure : {CostMeasure::cpu_seconds, CostMeasure::cell_iterations}) {
-    const Chart chart = speed_accuracy_chart(summaries(), measure);
+    const Chart chart = speed_accuracy_chart(test::synthetic_summaries(), measure);
     ASSERT_GE(chart.series.size(), 2u);
     EXPECT_EQ(chart.series[0].x.size(), 4u);
     EXPECT_EQ(chart.series[0].point_labels[0], "Δ* 0.5");  // most accurate first
@@ -187,7 +183,7 @@ TEST(ChartRules, SpeedAccuracyChartsPlotTheFront) {
 // manufactured data: RDE_i = (Fs|f0 − f_i| + σ)/f0, least CPU time among
 // the grids that meet the target with every finer grid.
 TEST(ChartRules, TargetTableMatchesABruteForceSearch) {
-  const auto s = summaries();
+  const auto s = test::synthetic_summaries();
   const std::vector<double> targets{0.05, 0.02, 0.01, 0.005};
   const Table t = cost_table(s, targets);
   std::size_t row = 0;

@@ -16,10 +16,6 @@
 namespace gridfree {
 namespace {
 
-std::vector<SeriesSummary> summaries() {
-  return summarize_series(test::synthetic_study(), test::fake_extrapolation);
-}
-
 TEST(ReportSeries, LabelNamesTheFactors) {
   SeriesData s{0, "PC1", "superbee", "bvk", "diffusion", 6, "done", {}};
   EXPECT_EQ(s.label(), "PC1 superbee fwhm6 bvk");
@@ -30,7 +26,7 @@ TEST(ReportSeries, LabelNamesTheFactors) {
 }
 
 TEST(ReportSeries, SummaryCountsAndSortsGrids) {
-  const auto s = summaries();
+  const auto s = test::synthetic_summaries();
   ASSERT_EQ(s.size(), 3u);
   EXPECT_EQ(s[0].h, (std::vector<double>{0.5, 1.0, 1.5, 2.0}));
   EXPECT_EQ(s[0].f[0], 1004.0);  // 1000 + 8·0.5
@@ -70,7 +66,7 @@ TEST(ReportDifferences, RelativeDifferenceFormula) {
 }
 
 TEST(ReportDifferences, OnlyPairsDifferingInExactlyOneFactor) {
-  const auto s = summaries();
+  const auto s = test::synthetic_summaries();
   const auto d = one_factor_differences(s);
   ASSERT_EQ(d.size(), 2u);  // A–B (drag), A–C (case); B–C differ in two
   EXPECT_EQ(d[0].factor, "drag");
@@ -97,7 +93,7 @@ TEST(ReportDifferences, FilterWidthAndDepositionAreFactors) {
 // f = 1004, U = 1.25·4 + 0.5 = 5.5; B (h = 0.5, its 0.25 diverged): f = 1502.5,
 // U = 1.25·2.5 + 0.5 = 3.625. |1000 − 1500| = 500 > √(5.5² + 3.625²) = 6.587.
 TEST(ReportDifferences, DifferenceAgainstCombinedUncertaintyAndVerdicts) {
-  const auto s = summaries();
+  const auto s = test::synthetic_summaries();
   const auto d = one_factor_differences(s);
   ASSERT_EQ(d.size(), 2u);
   EXPECT_DOUBLE_EQ(*d[0].u_a, 5.5);
@@ -114,7 +110,7 @@ TEST(ReportDifferences, DifferenceAgainstCombinedUncertaintyAndVerdicts) {
 }
 
 TEST(ReportTables, PowerLawPAndCShownOnlyWhenThePowerLawIsChosen) {
-  const Table t = series_table(summaries());
+  const Table t = series_table(test::synthetic_summaries());
   std::size_t p = 0, c = 0, method = 0;
   for (std::size_t i = 0; i < t.columns.size(); ++i) {
     if (t.columns[i].name == "p") p = i;
@@ -132,7 +128,7 @@ TEST(ReportTables, PowerLawPAndCShownOnlyWhenThePowerLawIsChosen) {
 // Series A (f = 1000 + 8h, U = 1.25·8h + 0.5): RDE = (10h + 0.5)/1000 =
 // 0.55, 1.05, 1.55, 2.05 % on h = 0.5, 1, 1.5, 2; CPU = 20/h³ s.
 TEST(ReportTables, CheapestGridForATargetRde) {
-  const auto s = summaries();
+  const auto s = test::synthetic_summaries();
   auto h_for = [&](double target) {
     const GridPoint* g = cheapest_grid_for(s[0], target);
     return g ? g->delta_star : -1.0;
@@ -175,7 +171,7 @@ TEST(ReportTables, CheapestGridMustKeepTheTargetOnEveryFinerGrid) {
 // B's chosen fit is the mixed one: its power law is drawn faded and
 // labelled "rejected", the mixed fit labelled "chosen" at full opacity.
 TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
-  const auto s = summaries();
+  const auto s = test::synthetic_summaries();
   const Chart chart = series_chart(s[1], 1);
   int rejected = 0, chosen = 0;
   for (const auto& c : chart.series) {
@@ -200,7 +196,7 @@ TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
-  const Table t = series_table(summaries());
+  const Table t = series_table(test::synthetic_summaries());
   ASSERT_EQ(t.rows.size(), 3u);
   auto col = [&](const std::string& name) {
     for (std::size_t i = 0; i < t.columns.size(); ++i) {
@@ -233,7 +229,7 @@ TEST(ReportTables, CsvQuotesAndMarkdownEscapes) {
 }
 
 TEST(ReportTables, FailuresListEveryUnusableGridWithItsReason) {
-  const Table t = failures_table(summaries());
+  const Table t = failures_table(test::synthetic_summaries());
   ASSERT_EQ(t.rows.size(), 1u);  // the diverged grid; the queued one is pending, not failed
   EXPECT_EQ(t.rows[0][0].exact, "PC1 superbee fwhm6 hkl");
   EXPECT_EQ(t.rows[0][3].exact, "diverged");
@@ -241,7 +237,7 @@ TEST(ReportTables, FailuresListEveryUnusableGridWithItsReason) {
 }
 
 TEST(ReportTables, GciTableComparesWithF0) {
-  const Table t = gci_table(summaries());
+  const Table t = gci_table(test::synthetic_summaries());
   // A and B: 4 grids → 2 triplets each; C: 3 grids → 1 triplet.
   ASSERT_EQ(t.rows.size(), 5u);
   // A's second triplet: φ_ext = 1000 + 100 → (φ_ext − f0)/f0 = 0.1.

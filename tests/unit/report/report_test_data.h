@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/report_data.h"
+#include "report/series_summary.h"
 
 namespace gridfree::test {
 
@@ -111,6 +112,11 @@ inline nlohmann::json fake_extrapolation(const std::vector<double>& h, const std
   }
   j["notes"] = json::array();
   return j;
+}
+
+// The synthetic study's series summarized with the stand-in extrapolator.
+inline std::vector<SeriesSummary> synthetic_summaries() {
+  return summarize_series(synthetic_study(), fake_extrapolation);
 }
 
 }  // namespace gridfree::test

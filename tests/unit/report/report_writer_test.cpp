@@ -14,6 +14,7 @@
 #include "report/chart_export.h"
 #include "report/report.h"
 #include "report_test_data.h"
+#include "test_files.h"
 #include "xml_check.h"
 
 namespace gridfree {
@@ -22,16 +23,11 @@ namespace {
 namespace fs = std::filesystem;
 using Row = std::map<std::string, std::string>;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 // RFC 4180 reader, enough for the report's CSV (quoted fields, "" escapes).
 std::vector<Row> read_csv(const fs::path& p) {
-  const std::string text = read(p);
+  const std::string text = slurp(p);
   std::vector<std::vector<std::string>> records(1);
   std::string field;
   bool quoted = false;
@@ -111,7 +107,7 @@ TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
         EXPECT_GT(fs::file_size(copy), 100u) << copy;
       }
     }
-    EXPECT_NE(read(dir_ / "report.html").find("fig2_rde.pdf"), std::string::npos);
+    EXPECT_NE(slurp(dir_ / "report.html").find("fig2_rde.pdf"), std::string::npos);
   }
   EXPECT_EQ(files_.svg.size(), 3u + 3u + 3u);  // overview (RDE, 2 × cost) + per-series fig1 + gci
   for (const auto& entry : fs::directory_iterator(dir_)) {
@@ -172,7 +168,7 @@ TEST_F(ReportWriter, SeriesAndDifferencesTables) {
 }
 
 TEST_F(ReportWriter, HtmlIsSelfContainedAndWellFormed) {
-  const std::string html = read(dir_ / "report.html");
+  const std::string html = slurp(dir_ / "report.html");
   EXPECT_EQ(test::xml_problem(html, true), "");
   for (const char* external : {"src=\"http", "href=\"http", "<link", "<script", "@import", "url(http"}) {
     EXPECT_EQ(html.find(external), std::string::npos) << external;
@@ -186,17 +182,17 @@ TEST_F(ReportWriter, HtmlIsSelfContainedAndWellFormed) {
 
 TEST_F(ReportWriter, SvgFilesAreWellFormed) {
   for (const auto& svg : files_.svg) {
-    EXPECT_EQ(test::xml_problem(read(svg)), "") << svg;
+    EXPECT_EQ(test::xml_problem(slurp(svg)), "") << svg;
   }
   // The failed grid of B is drawn (× marker) in its Fig. 1 chart.
-  const std::string b = read(dir_ / "fig1_02_PC1_superbee_fwhm6_hkl.svg");
+  const std::string b = slurp(dir_ / "fig1_02_PC1_superbee_fwhm6_hkl.svg");
   EXPECT_NE(b.find("failed / not converged"), std::string::npos);
   // The running series C shows its pending grid.
-  EXPECT_NE(read(dir_ / "fig1_03_PC2_superbee_fwhm6_bvk.svg").find("pending"), std::string::npos);
+  EXPECT_NE(slurp(dir_ / "fig1_03_PC2_superbee_fwhm6_bvk.svg").find("pending"), std::string::npos);
 }
 
 TEST_F(ReportWriter, MarkdownLinksEveryChartAndTable) {
-  const std::string md = read(dir_ / "report.md");
+  const std::string md = slurp(dir_ / "report.md");
   for (const auto& svg : files_.svg) {
     EXPECT_NE(md.find("](" + svg.filename().string() + ")"), std::string::npos) << svg;
   }
@@ -217,9 +213,9 @@ TEST_F(ReportWriter, StaleSeriesChartsAreRemovedOtherFilesKept) {
 }
 
 TEST_F(ReportWriter, RewritingGivesTheSameBytes) {
-  const std::string before = read(dir_ / "report.html");
+  const std::string before = slurp(dir_ / "report.html");
   write_study_report(test::synthetic_study(), dir_, test::fake_extrapolation);
-  EXPECT_EQ(read(dir_ / "report.html"), before);
+  EXPECT_EQ(slurp(dir_ / "report.html"), before);
 }
 
 }  // namespace

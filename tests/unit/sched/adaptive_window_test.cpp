@@ -30,7 +30,7 @@ std::vector<double> ladder_h() {
 // h = 3.3), i.e. they lie outside the asymptotic range of the fine ones.
 double spoiled(double h) { return 1000 + 5 * h + (h > 1.5 ? 3 * std::pow(h, 4) : 0.0); }
 
-AdaptiveGrids settings() {
+AdaptiveGrids fine_ladder_settings() {
   AdaptiveGrids a;
   a.target_rde = 0.01;
   a.coarsest_delta_star = 3.3;
@@ -41,7 +41,7 @@ AdaptiveGrids settings() {
 
 std::vector<AdaptiveRung> rungs() {
   std::vector<AdaptiveRung> out;
-  for (double d : adaptive_ladder(settings())) out.push_back({d, {10, 10, 10}, 100.0, 1e6});
+  for (double d : adaptive_ladder(fine_ladder_settings())) out.push_back({d, {10, 10, 10}, 100.0, 1e6});
   return out;
 }
 
@@ -53,7 +53,7 @@ TEST(AdaptiveWindow, CoarseGridsOfAnotherOrderAreLeftOutAndTheSeriesStops) {
   // Without the window: the fit on all nine grids is not converged.
   const auto full = adaptive_fit_of(extrapolate(h, f), 9);
   ASSERT_NE(full.verdict, "converged");
-  const auto without = decide_adaptive_step(settings(), rungs(), 9, full, 1.0, 1e15);
+  const auto without = decide_adaptive_step(fine_ladder_settings(), rungs(), 9, full, 1.0, 1e15);
   EXPECT_EQ(without.kind, AdaptiveDecision::Kind::kContinue) << without.message;
 
   const WindowedFit w = windowed_extrapolation(h, f, extrapolate);
@@ -69,7 +69,7 @@ TEST(AdaptiveWindow, CoarseGridsOfAnotherOrderAreLeftOutAndTheSeriesStops) {
   // The window is exactly f0 + 5h: the extrapolation returns f0 = 1000 to
   // least-squares round-off (1e-6 relative to values of ~1000).
   EXPECT_NEAR(*fit.f0, 1000, 1e-3);
-  const auto with = decide_adaptive_step(settings(), rungs(), 9, fit, 1.0, 1e15);
+  const auto with = decide_adaptive_step(fine_ladder_settings(), rungs(), 9, fit, 1.0, 1e15);
   EXPECT_EQ(with.kind, AdaptiveDecision::Kind::kTargetMet) << with.message;
   EXPECT_NE(with.message.find("fit on the 5 finest grids, Δ* 1.35 → 0.554; the 4 coarser ones were left out"),
             std::string::npos)

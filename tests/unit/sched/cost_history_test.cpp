@@ -15,11 +15,13 @@
 #include "scratch_dir.h"
 #include "store/store.h"
 #include "study/study_plan.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
-const std::string kSource = GRIDFREE_SOURCE_DIR;
+using test_support::kSourceDir;
+using test_support::study_of;
 
 double cells_of(const std::array<int, 3>& c) { return static_cast<double>(c[0]) * c[1] * c[2]; }
 
@@ -47,7 +49,7 @@ void fill_history(Store& store, long long study_id) {
 TEST(CostHistory, PlanUsesFinishedSimilarJobsAndFallsBackToAPriori) {
   const auto dir = test_support::fresh_scratch_dir("cost_history_test", "plan");
   const auto db = dir / "g.sqlite";
-  const Study study = parse_study(kSource + "/studies/sscp_coarse.json");
+  const Study study = parse_study(kSourceDir / "studies/sscp_coarse.json");
   const ExpandedStudy ex = expand(study);
   {
     Store store(db);
@@ -80,7 +82,7 @@ TEST(CostHistory, PlanUsesFinishedSimilarJobsAndFallsBackToAPriori) {
   // 6 000 to 34 506 cells are all nested-start grids).
   auto doc = study.definition;
   doc["factors"]["drag"] = {"hkl"};
-  const Study hkl = parse_study_document(doc, kSource + "/studies");
+  const Study hkl = study_of(doc);
   const Plan a = make_plan(hkl, expand(hkl), 1, 1, history);
   for (const auto& row : a.rows) {
     EXPECT_EQ(row.cost_source, CostSource::kAPriori) << row.series;
@@ -88,7 +90,7 @@ TEST(CostHistory, PlanUsesFinishedSimilarJobsAndFallsBackToAPriori) {
     EXPECT_DOUBLE_EQ(row.cost_ratio_max, kReferenceNestedRatio) << row.series;
   }
   // The bursting bubble from the same database: a-priori, ratio 1 (the base model).
-  const Study bubble = parse_study(kSource + "/studies/quickstart.json");
+  const Study bubble = parse_study(kSourceDir / "studies/quickstart.json");
   const Plan b = make_plan(bubble, expand(bubble), 1, 1, history);
   EXPECT_EQ(b.rows.front().cost_source, CostSource::kAPriori);
   EXPECT_EQ(b.rows.front().cost_ratio_max, 1.0);

@@ -6,18 +6,17 @@
 
 #include "store/store.h"
 #include "scratch_dir.h"
+#include "store_queries.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_db(const std::string& name) {
-  const auto dir = test_support::fresh_scratch_dir("store_adopt_test", name);
-  return dir / "g.sqlite";
-}
+using test_support::scalar;
 
-std::pair<Study, ExpandedStudy> make_study(int grids) {
+// One series on `grids` grids.
+std::pair<Study, ExpandedStudy> one_series_study(int grids) {
   Study s;
   s.name = "a";
   s.definition = {{"name", "a"}, {"grids", grids}};
@@ -35,15 +34,9 @@ std::pair<Study, ExpandedStudy> make_study(int grids) {
   return {s, ex};
 }
 
-long long scalar(Store& store, const std::string& sql) {
-  auto st = store.db().prepare(sql);
-  st.step();
-  return st.as_int(0);
-}
-
 TEST(StoreAdopt, OnlyStaleJobsWithAQueueIdAreTakenOverAttemptsUnchanged) {
-  Store store(temp_db("take"));
-  auto [s, ex] = make_study(4);
+  Store store(test_support::fresh_db_path("store_adopt_test", "take"));
+  auto [s, ex] = one_series_study(4);
   const auto sub = store.submit(s, ex);
   const std::string dead = "gone:1:1", live = "here:2:2";
   auto j1 = store.claim_next(sub.study_id, dead);  // in Slurm
@@ -79,8 +72,8 @@ TEST(StoreAdopt, OnlyStaleJobsWithAQueueIdAreTakenOverAttemptsUnchanged) {
 }
 
 TEST(StoreAdopt, RetryRequeuesOnlyFailedJobsAndReopensTheStudy) {
-  Store store(temp_db("retry"));
-  auto [s, ex] = make_study(2);
+  Store store(test_support::fresh_db_path("store_adopt_test", "retry"));
+  auto [s, ex] = one_series_study(2);
   const auto sub = store.submit(s, ex);
   auto j1 = store.claim_next(sub.study_id, "me:1:1");
   auto j2 = store.claim_next(sub.study_id, "me:1:1");

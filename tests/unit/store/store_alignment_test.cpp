@@ -12,24 +12,21 @@
 #include "store/store.h"
 #include "store/store_alignment.h"
 #include "scratch_dir.h"
+#include "quickstart_study.h"
+#include "store_queries.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-const std::string kSource = GRIDFREE_SOURCE_DIR;
-
-fs::path temp_db(const std::string& name) {
-  const auto& dir = test_support::scratch_root("store_alignment_test");
-  fs::create_directories(dir);
-  const auto db = dir / (name + ".sqlite");
-  fs::remove(db);
-  return db;
-}
+using test_support::quickstart_document;
+using test_support::scalar;
+using test_support::study_of;
 
 json study_doc(bool with_alignment) {
-  json doc = read_json_file(kSource + "/studies/quickstart.json");
+  json doc = quickstart_document();
   doc.erase("design");
   doc["factors"] = {{"convection", {"superbee", "fou"}}};
   doc["grids"] = {{"delta_star", {2.0, 1.333, 1.0, 0.8}}};
@@ -40,17 +37,11 @@ json study_doc(bool with_alignment) {
 // A made-up dp* that depends on every cell count (so variants differ).
 double fake_dp(const std::array<int, 3>& c) { return 1000.0 + 0.37 * c[1] - 0.11 * c[0] + 0.013 * ((c[0] * c[1]) % 7); }
 
-long long scalar(Store& store, const std::string& sql) {
-  auto st = store.db().prepare(sql);
-  st.step();
-  return st.as_int(0);
-}
-
 TEST(StoreAlignment, VariantsRunLikeJobsAndTheViewGivesTheirSpread) {
-  const Study s = parse_study_document(study_doc(true), kSource + "/studies");
+  const Study s = study_of(study_doc(true));
   const ExpandedStudy ex = expand(s);
   ASSERT_EQ(ex.alignment.size(), 2u * 2u * 4u);
-  Store store(temp_db("with"));
+  Store store(test_support::fresh_db_path("store_alignment_test", "with"));
   const auto sub = store.submit(s, ex);
   EXPECT_EQ(sub.jobs_total, ex.jobs.size() + ex.alignment.size());
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs"), static_cast<long long>(ex.jobs.size() + ex.alignment.size()));
@@ -100,8 +91,8 @@ TEST(StoreAlignment, VariantsRunLikeJobsAndTheViewGivesTheirSpread) {
 }
 
 TEST(StoreAlignment, AMissingVariantLeavesTheSpreadEmpty) {
-  const Study s = parse_study_document(study_doc(true), kSource + "/studies");
-  Store store(temp_db("missing"));
+  const Study s = study_of(study_doc(true));
+  Store store(test_support::fresh_db_path("store_alignment_test", "missing"));
   const auto sub = store.submit(s, expand(s));
   auto job = store.claim_next(sub.study_id, "me");
   ASSERT_TRUE(job);
@@ -113,9 +104,9 @@ TEST(StoreAlignment, AMissingVariantLeavesTheSpreadEmpty) {
 }
 
 TEST(StoreAlignment, DeletingTheStudyRemovesItsVariants) {
-  const Study s = parse_study_document(study_doc(true), kSource + "/studies");
+  const Study s = study_of(study_doc(true));
   const ExpandedStudy ex = expand(s);
-  Store store(temp_db("delete"));
+  Store store(test_support::fresh_db_path("store_alignment_test", "delete"));
   store.submit(s, ex);
   const auto removed = store.delete_study(s.name);
   ASSERT_TRUE(removed.has_value());
@@ -126,9 +117,9 @@ TEST(StoreAlignment, DeletingTheStudyRemovesItsVariants) {
 }
 
 TEST(StoreAlignment, AStudyWithoutTheOptionHasNoVariants) {
-  const Study s = parse_study_document(study_doc(false), kSource + "/studies");
+  const Study s = study_of(study_doc(false));
   const ExpandedStudy ex = expand(s);
-  Store store(temp_db("without"));
+  Store store(test_support::fresh_db_path("store_alignment_test", "without"));
   const auto sub = store.submit(s, ex);
   EXPECT_EQ(sub.jobs_total, ex.jobs.size());
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM alignment_jobs"), 0);

@@ -8,22 +8,18 @@
 #include "core/input_error.h"
 #include "store/store.h"
 #include "scratch_dir.h"
+#include "store_queries.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_db(const std::string& name) {
-  const auto& dir = test_support::scratch_root("store_delete_test");
-  fs::create_directories(dir);
-  const auto db = dir / (name + ".sqlite");
-  for (const auto& f : {db.string(), db.string() + "-wal", db.string() + "-shm"}) fs::remove(f);
-  return db;
-}
+using test_support::converged;
+using test_support::scalar;
 
 // One series on the grids `tags` (a job per tag: equal tags = the same job).
-std::pair<Study, ExpandedStudy> make_study(const std::string& name, const std::vector<std::string>& tags) {
+std::pair<Study, ExpandedStudy> tagged_study(const std::string& name, const std::vector<std::string>& tags) {
   Study s;
   s.name = name;
   s.definition = {{"name", name}, {"tags", tags}};
@@ -42,31 +38,16 @@ std::pair<Study, ExpandedStudy> make_study(const std::string& name, const std::v
   return {s, ex};
 }
 
-ResultRow converged(double dp, double delta_star) {
-  ResultRow r;
-  r.status = "converged";
-  r.dp_star = dp;
-  r.delta_star = delta_star;
-  r.result_json = "{}";
-  return r;
-}
-
-long long scalar(Store& store, const std::string& sql) {
-  auto st = store.db().prepare(sql);
-  st.step();
-  return st.as_int(0);
-}
-
 void finish_all(Store& store, long long study_id) {
-  // Grid g has cells (10 + g, 20, 5) and Δ* 3 − 0.5 g (make_study).
+  // Grid g has cells (10 + g, 20, 5) and Δ* 3 − 0.5 g (tagged_study).
   while (auto job = store.claim_next(study_id, "me"))
     store.record_result(job->job_id, "me", converged(1000, 3.0 - 0.5 * (job->cells[0] - 10)));
 }
 
 TEST(StoreDelete, RemovesTheStudyAndOrphansButKeepsSharedJobs) {
-  Store store(temp_db("delete"));
-  auto [a, exa] = make_study("a", {"shared", "only-a"});
-  auto [b, exb] = make_study("b", {"shared", "only-b"});
+  Store store(test_support::fresh_db_path("store_delete_test", "delete"));
+  auto [a, exa] = tagged_study("a", {"shared", "only-a"});
+  auto [b, exb] = tagged_study("b", {"shared", "only-b"});
   const auto sa = store.submit(a, exa);
   store.submit(b, exb);
   finish_all(store, sa.study_id);
@@ -86,8 +67,8 @@ TEST(StoreDelete, RemovesTheStudyAndOrphansButKeepsSharedJobs) {
 }
 
 TEST(StoreDelete, RefusedWhileAJobRuns) {
-  Store store(temp_db("running"));
-  auto [a, exa] = make_study("a", {"j1", "j2"});
+  Store store(test_support::fresh_db_path("store_delete_test", "running"));
+  auto [a, exa] = tagged_study("a", {"j1", "j2"});
   const auto sa = store.submit(a, exa);
   ASSERT_TRUE(store.claim_next(sa.study_id, "me"));
   EXPECT_THROW(store.delete_study("a"), InputError);
@@ -96,12 +77,12 @@ TEST(StoreDelete, RefusedWhileAJobRuns) {
 }
 
 TEST(StoreDelete, ChangedDefinitionNeedsReplaceAndReusesFinishedJobs) {
-  Store store(temp_db("replace"));
-  auto [a, exa] = make_study("a", {"j1", "j2"});
+  Store store(test_support::fresh_db_path("store_delete_test", "replace"));
+  auto [a, exa] = tagged_study("a", {"j1", "j2"});
   const auto first = store.submit(a, exa);
   finish_all(store, first.study_id);
 
-  auto [changed, exc] = make_study("a", {"j1", "j3"});
+  auto [changed, exc] = tagged_study("a", {"j1", "j3"});
   try {
     store.submit(changed, exc);
     ADD_FAILURE() << "a changed definition was accepted without replace";
@@ -126,8 +107,8 @@ TEST(StoreDelete, ChangedDefinitionNeedsReplaceAndReusesFinishedJobs) {
 }
 
 TEST(StoreDelete, NominalDeltaStarAndTheSeriesView) {
-  Store store(temp_db("view"));
-  auto [a, exa] = make_study("a", {"j1", "j2"});
+  Store store(test_support::fresh_db_path("store_delete_test", "view"));
+  auto [a, exa] = tagged_study("a", {"j1", "j2"});
   const auto sa = store.submit(a, exa);
   finish_all(store, sa.study_id);
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM v_results WHERE delta_star_nominal IS NOT NULL"), 2);

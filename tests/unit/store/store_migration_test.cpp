@@ -9,29 +9,15 @@
 #include "store/schema.h"
 #include "store/store.h"
 #include "scratch_dir.h"
+#include "store_queries.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_db(const std::string& name) {
-  const auto& dir = test_support::scratch_root("store_migration_test");
-  fs::create_directories(dir);
-  return dir / (name + ".sqlite");
-}
-
-long long scalar(Database& db, const std::string& sql) {
-  auto st = db.prepare(sql);
-  st.step();
-  return st.as_int(0);
-}
-
-std::string text(Database& db, const std::string& sql) {
-  auto st = db.prepare(sql);
-  st.step();
-  return st.as_text(0);
-}
+using test_support::scalar;
+using test_support::text;
 
 // A version-4 database: one study, three series (fm18, an explicit
 // diffusion transfer, centroid), a job each with a result, an uncertainty
@@ -58,7 +44,7 @@ INSERT INTO extrapolations(series_id, method, f0, chosen, status) VALUES (10, 'p
 }
 
 TEST(StoreMigration, Version4DatabaseGainsTransferColumnsWithItsDataIntact) {
-  const auto file = temp_db("v4");
+  const auto file = test_support::fresh_db_path("store_migration_test", "v4");
   fill_v4(file);
   Store store(file, false);
   Database& db = store.db();
@@ -93,7 +79,7 @@ TEST(StoreMigration, Version4DatabaseGainsTransferColumnsWithItsDataIntact) {
 }
 
 TEST(StoreMigration, UniqueKeyIncludesTheTransfer) {
-  const auto file = temp_db("unique");
+  const auto file = test_support::fresh_db_path("store_migration_test", "unique");
   fs::remove(file);
   Store store(file);
   Database& db = store.db();

@@ -12,21 +12,16 @@
 #include "store/schema.h"
 #include "store/store.h"
 #include "scratch_dir.h"
+#include "store_queries.h"
 
 namespace gridfree {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_db(const std::string& name) {
-  const auto& dir = test_support::scratch_root("store_test");
-  fs::create_directories(dir);
-  const auto db = dir / (name + ".sqlite");
-  fs::remove(db);
-  fs::remove(fs::path(db.string() + "-wal"));
-  fs::remove(fs::path(db.string() + "-shm"));
-  return db;
-}
+using test_support::converged;
+using test_support::scalar;
+using test_support::text;
 
 // A study of `series` series × `grids` grids with synthetic job documents;
 // `tag` makes its jobs distinct from another study's (or not, when equal).
@@ -51,29 +46,8 @@ std::pair<Study, ExpandedStudy> make_study(const std::string& name, int series, 
   return {s, ex};
 }
 
-ResultRow converged(double dp, double h) {
-  ResultRow r;
-  r.status = "converged";
-  r.dp_star = dp;
-  r.delta_star = h;
-  r.result_json = "{}";
-  return r;
-}
-
-long long scalar(Store& store, const std::string& sql) {
-  auto st = store.db().prepare(sql);
-  st.step();
-  return st.as_int(0);
-}
-
-std::string text(Store& store, const std::string& sql) {
-  auto st = store.db().prepare(sql);
-  st.step();
-  return st.as_text(0);
-}
-
 TEST(Store, SchemaHasTheContractTablesViewAndPragmas) {
-  Store store(temp_db("schema"));
+  Store store(test_support::fresh_db_path("store_test", "schema"));
   EXPECT_EQ(schema_version(store.db()), kSchemaVersion);
   EXPECT_EQ(text(store, "PRAGMA journal_mode"), "wal");
   EXPECT_EQ(scalar(store, "PRAGMA foreign_keys"), 1);
@@ -105,7 +79,7 @@ TEST(Store, SchemaHasTheContractTablesViewAndPragmas) {
 }
 
 TEST(Store, ReopeningMigratesNothingAndKeepsData) {
-  const auto db = temp_db("reopen");
+  const auto db = test_support::fresh_db_path("store_test", "reopen");
   {
     Store store(db);
     auto [s, ex] = make_study("a", 1, 2, "t");
@@ -116,7 +90,7 @@ TEST(Store, ReopeningMigratesNothingAndKeepsData) {
 }
 
 TEST(Store, SubmitInsertsEverythingAndResubmitIsANoOp) {
-  Store store(temp_db("submit"));
+  Store store(test_support::fresh_db_path("store_test", "submit"));
   auto [s, ex] = make_study("a", 2, 3, "t");
   const auto first = store.submit(s, ex);
   EXPECT_TRUE(first.created);
@@ -137,7 +111,7 @@ TEST(Store, SubmitInsertsEverythingAndResubmitIsANoOp) {
 }
 
 TEST(Store, JobsAlreadyDoneInAnotherStudyAreReusedNotRerun) {
-  Store store(temp_db("reuse"));
+  Store store(test_support::fresh_db_path("store_test", "reuse"));
   auto [a, exa] = make_study("a", 1, 2, "shared");
   const auto sa = store.submit(a, exa);
   const std::string me = this_process_owner();
@@ -153,7 +127,7 @@ TEST(Store, JobsAlreadyDoneInAnotherStudyAreReusedNotRerun) {
 }
 
 TEST(Store, ClaimMarksRunningAndCountsAttempts) {
-  Store store(temp_db("claim"));
+  Store store(test_support::fresh_db_path("store_test", "claim"));
   auto [s, ex] = make_study("a", 1, 2, "t");
   const auto sub = store.submit(s, ex);
   const auto job = store.claim_next(sub.study_id, "me");
@@ -167,7 +141,7 @@ TEST(Store, ClaimMarksRunningAndCountsAttempts) {
 }
 
 TEST(Store, TwoConnectionsNeverClaimTheSameJob) {
-  const auto db = temp_db("atomic");
+  const auto db = test_support::fresh_db_path("store_test", "atomic");
   constexpr int kJobs = 40;
   {
     Store store(db);
@@ -192,7 +166,7 @@ TEST(Store, TwoConnectionsNeverClaimTheSameJob) {
 }
 
 TEST(Store, RetryableFailureIsRetriedOnceThenFailed) {
-  Store store(temp_db("retry"));
+  Store store(test_support::fresh_db_path("store_test", "retry"));
   auto [s, ex] = make_study("a", 1, 1, "t");
   const auto sub = store.submit(s, ex);
   ResultRow crash;
@@ -214,7 +188,7 @@ TEST(Store, RetryableFailureIsRetriedOnceThenFailed) {
 }
 
 TEST(Store, OnlyTheOwnerRecordsAResult) {
-  Store store(temp_db("owner"));
+  Store store(test_support::fresh_db_path("store_test", "owner"));
   auto [s, ex] = make_study("a", 1, 1, "t");
   const auto sub = store.submit(s, ex);
   auto job = store.claim_next(sub.study_id, "me");
@@ -225,7 +199,7 @@ TEST(Store, OnlyTheOwnerRecordsAResult) {
 }
 
 TEST(Store, StaleRunningJobsOfDeadOwnersAreRequeuedOnStartup) {
-  Store store(temp_db("stale"));
+  Store store(test_support::fresh_db_path("store_test", "stale"));
   auto [s, ex] = make_study("a", 1, 3, "t");
   const auto sub = store.submit(s, ex);
   const std::string dead = "nohost-that-is-this:1:1";
@@ -251,7 +225,7 @@ TEST(Store, OwnerOfAFinishedProcessIsNotAlive) {
 }
 
 TEST(Store, ReleaseRequeuesWithoutSpendingAnAttempt) {
-  Store store(temp_db("release"));
+  Store store(test_support::fresh_db_path("store_test", "release"));
   auto [s, ex] = make_study("a", 1, 1, "t");
   const auto sub = store.submit(s, ex);
   auto job = store.claim_next(sub.study_id, "me");
@@ -261,7 +235,7 @@ TEST(Store, ReleaseRequeuesWithoutSpendingAnAttempt) {
 }
 
 TEST(Store, SeriesCompletionExtrapolationAndStudyStatus) {
-  Store store(temp_db("series"));
+  Store store(test_support::fresh_db_path("store_test", "series"));
   auto [s, ex] = make_study("a", 2, 2, "t");
   const auto sub = store.submit(s, ex);
   EXPECT_TRUE(store.series_ready(sub.study_id).empty());
@@ -285,7 +259,7 @@ TEST(Store, SeriesCompletionExtrapolationAndStudyStatus) {
 }
 
 TEST(Store, CancelStopsQueuedJobsAndResubmitResumes) {
-  Store store(temp_db("cancel"));
+  Store store(test_support::fresh_db_path("store_test", "cancel"));
   auto [s, ex] = make_study("a", 1, 3, "t");
   const auto sub = store.submit(s, ex);
   auto running = store.claim_next(sub.study_id, "me");

@@ -9,32 +9,22 @@
 #include "core/input_error.h"
 #include "study/adaptive_rungs.h"
 #include "study/study.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
-const std::string kSource = GRIDFREE_SOURCE_DIR;
+using test_support::contains;
+using test_support::problem_paths;
+using test_support::quickstart_document;
+using test_support::study_of;
 
 nlohmann::json adaptive_study() {
-  auto doc = read_json_file(kSource + "/studies/quickstart.json");
+  auto doc = quickstart_document();
   doc["grids"] = {{"target_rde", 0.01}, {"coarsest_delta_star", 3.3}, {"ratio", 1.25}, {"finest_delta_star", 0.6}};
   return doc;
 }
-
-Study study_of(const nlohmann::json& doc) { return parse_study_document(doc, kSource + "/studies"); }
-
-// The pointers of every problem the study has (empty when it parses).
-std::vector<std::string> problems_of(const nlohmann::json& doc) {
-  std::vector<std::string> out;
-  try {
-    study_of(doc);
-  } catch (const InputError& e) {
-    for (const auto& p : e.problems()) out.push_back(p.where);
-  }
-  return out;
-}
-
-bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
 
 TEST(AdaptiveGrids, ParsesIntoTheLadderAndStartsWithFourRungs) {
   const Study s = study_of(adaptive_study());
@@ -66,29 +56,29 @@ TEST(AdaptiveGrids, EveryBadFieldIsNamed) {
   auto doc = adaptive_study();
   doc["grids"] = {{"target_rde", 1.5}, {"coarsest_delta_star", -1}, {"ratio", 1.05}, {"max_memory", "lots"},
                   {"max_cpu_s", 0}};
-  const auto p = problems_of(doc);
-  EXPECT_TRUE(has(p, "/grids/target_rde")) << ::testing::PrintToString(p);
-  EXPECT_TRUE(has(p, "/grids/coarsest_delta_star")) << ::testing::PrintToString(p);
-  EXPECT_TRUE(has(p, "/grids/ratio")) << ::testing::PrintToString(p);
-  EXPECT_TRUE(has(p, "/grids/finest_delta_star")) << ::testing::PrintToString(p);  // missing
-  EXPECT_TRUE(has(p, "/grids/max_memory")) << ::testing::PrintToString(p);
-  EXPECT_TRUE(has(p, "/grids/max_cpu_s")) << ::testing::PrintToString(p);
+  const auto p = problem_paths(doc);
+  EXPECT_TRUE(contains(p, "/grids/target_rde")) << ::testing::PrintToString(p);
+  EXPECT_TRUE(contains(p, "/grids/coarsest_delta_star")) << ::testing::PrintToString(p);
+  EXPECT_TRUE(contains(p, "/grids/ratio")) << ::testing::PrintToString(p);
+  EXPECT_TRUE(contains(p, "/grids/finest_delta_star")) << ::testing::PrintToString(p);  // missing
+  EXPECT_TRUE(contains(p, "/grids/max_memory")) << ::testing::PrintToString(p);
+  EXPECT_TRUE(contains(p, "/grids/max_cpu_s")) << ::testing::PrintToString(p);
 }
 
 TEST(AdaptiveGrids, FinestMustBeBelowCoarsestAndLeaveFiveRungs) {
   auto doc = adaptive_study();
   doc["grids"]["finest_delta_star"] = 4.0;
-  EXPECT_TRUE(has(problems_of(doc), "/grids/finest_delta_star"));
+  EXPECT_TRUE(contains(problem_paths(doc), "/grids/finest_delta_star"));
   doc["grids"]["finest_delta_star"] = 1.36;  // 3.3 … 3.3/1.25^3 = 1.69: four rungs
-  EXPECT_TRUE(has(problems_of(doc), "/grids/finest_delta_star"));
+  EXPECT_TRUE(contains(problem_paths(doc), "/grids/finest_delta_star"));
   doc["grids"]["finest_delta_star"] = 1.35;  // 3.3/1.25^4 = 1.3517: five
-  EXPECT_TRUE(problems_of(doc).empty()) << ::testing::PrintToString(problems_of(doc));
+  EXPECT_TRUE(problem_paths(doc).empty()) << ::testing::PrintToString(problem_paths(doc));
 }
 
 TEST(AdaptiveGrids, AListAndATargetExcludeEachOther) {
   auto doc = adaptive_study();
   doc["grids"]["delta_star"] = {2.0, 1.0};
-  EXPECT_FALSE(problems_of(doc).empty());
+  EXPECT_FALSE(problem_paths(doc).empty());
 }
 
 TEST(AdaptiveGrids, StoredDefinitionGivesTheSameSettings) {
@@ -99,16 +89,16 @@ TEST(AdaptiveGrids, StoredDefinitionGivesTheSameSettings) {
   ASSERT_TRUE(a);
   EXPECT_DOUBLE_EQ(*a->max_memory_bytes, 2.0 * 1024 * 1024 * 1024);
   EXPECT_DOUBLE_EQ(*a->max_cpu_s, 600);
-  EXPECT_FALSE(adaptive_grids_of(read_json_file(kSource + "/studies/quickstart.json")));
+  EXPECT_FALSE(adaptive_grids_of(quickstart_document()));
 }
 
 TEST(AdaptiveGrids, MemorySizes) {
-  EXPECT_DOUBLE_EQ(*parse_memory_size("500 MiB"), 500.0 * 1048576);
-  EXPECT_DOUBLE_EQ(*parse_memory_size("2.5GB"), 2.5e9);
-  EXPECT_DOUBLE_EQ(*parse_memory_size(4096), 4096);
-  EXPECT_FALSE(parse_memory_size("12 parsecs"));
-  EXPECT_FALSE(parse_memory_size(-1));
-  EXPECT_FALSE(parse_memory_size(true));
+  EXPECT_DOUBLE_EQ(*parse_memory_field("500 MiB"), 500.0 * 1048576);
+  EXPECT_DOUBLE_EQ(*parse_memory_field("2.5GB"), 2.5e9);
+  EXPECT_DOUBLE_EQ(*parse_memory_field(4096), 4096);
+  EXPECT_FALSE(parse_memory_field("12 parsecs"));
+  EXPECT_FALSE(parse_memory_field(-1));
+  EXPECT_FALSE(parse_memory_field(true));
 }
 
 }  // namespace

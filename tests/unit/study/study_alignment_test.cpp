@@ -9,34 +9,27 @@
 #include "study/study.h"
 #include "study/study_alignment.h"
 #include "study/study_plan.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
 using nlohmann::json;
-const std::string kSource = GRIDFREE_SOURCE_DIR;
+using test_support::quickstart_document;
+using test_support::refusal;
+using test_support::study_of;
 
-json quickstart() {
-  json doc = read_json_file(kSource + "/studies/quickstart.json");
+json two_schemes_quickstart() {
+  json doc = quickstart_document();
   doc.erase("design");
   doc["factors"] = {{"convection", {"superbee", "fou"}}};
   doc["grids"] = {{"delta_star", {2.0, 1.0, 0.8}}};
   return doc;
 }
 
-Study study_of(const json& doc) { return parse_study_document(doc, kSource + "/studies"); }
-
-std::string refusal(const json& doc) {
-  try {
-    study_of(doc);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
-}
-
 TEST(StudyAlignment, VariantsOfTheListedGridsForEverySeries) {
-  json doc = quickstart();
+  json doc = two_schemes_quickstart();
   const auto plain = expand(study_of(doc));
   doc["alignment"] = {{"delta_star", {2.0, 0.8}}, {"ny_offsets", {1, 2, 3}}, {"nx_offsets", {0, 1}}};
   const auto ex = expand(study_of(doc));
@@ -65,16 +58,16 @@ TEST(StudyAlignment, VariantsOfTheListedGridsForEverySeries) {
 }
 
 TEST(StudyAlignment, AllGridsWhenNoneListedAndZeroCombinationLeftOut) {
-  json doc = quickstart();
+  json doc = two_schemes_quickstart();
   doc["factors"]["convection"] = {"superbee"};
   doc["alignment"] = {{"ny_offsets", {-1, 0, 1}}};
   const auto ex = expand(study_of(doc));
   EXPECT_EQ(ex.alignment.size(), 3u * 2u);  // 3 grids × offsets −1, +1
-  EXPECT_TRUE(expand(study_of(quickstart())).alignment.empty());  // default off
+  EXPECT_TRUE(expand(study_of(two_schemes_quickstart())).alignment.empty());  // default off
 }
 
 TEST(StudyAlignment, ThePlanCountsTheVariants) {
-  json doc = quickstart();
+  json doc = two_schemes_quickstart();
   const Study plain_study = study_of(doc);
   const Plan plain = make_plan(plain_study, expand(plain_study), 1, 1);
   doc["alignment"] = {{"delta_star", {2.0}}, {"ny_offsets", {1}}};
@@ -90,7 +83,7 @@ TEST(StudyAlignment, ThePlanCountsTheVariants) {
 }
 
 TEST(StudyAlignment, BadOptionsAreRefusedWithTheirPath) {
-  json doc = quickstart();
+  json doc = two_schemes_quickstart();
   doc["alignment"] = {{"delta_star", {1.5}}, {"ny_offsets", {1}}};
   EXPECT_NE(refusal(doc).find("/alignment/delta_star/0"), std::string::npos) << refusal(doc);
   doc["alignment"] = {{"ny_offsets", {0}}};

@@ -11,34 +11,20 @@
 #include "study/case_extends.h"
 #include "study/grid_listing.h"
 #include "study/study.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
 using nlohmann::json;
-const std::string kSource = GRIDFREE_SOURCE_DIR;
-
-json quickstart() { return read_json_file(kSource + "/studies/quickstart.json"); }
-Study study_of(const json& doc) { return parse_study_document(doc, kSource + "/studies"); }
-
-// The JSON pointers of the problems parse_study_document reports.
-std::vector<std::string> problem_paths(const json& doc) {
-  try {
-    study_of(doc);
-  } catch (const InputError& e) {
-    std::vector<std::string> out;
-    for (const auto& p : e.problems()) out.push_back(p.where);
-    return out;
-  }
-  return {};
-}
-
-bool contains(const std::vector<std::string>& v, const std::string& s) {
-  return std::find(v.begin(), v.end(), s) != v.end();
-}
+using test_support::contains;
+using test_support::problem_paths;
+using test_support::quickstart_document;
+using test_support::study_of;
 
 TEST(CaseExtends, MergesObjectsReplacesValuesAndDeletesNulls) {
-  json doc = quickstart();
+  json doc = quickstart_document();
   doc["cases"]["PC1"]["name"] = "first";
   doc["cases"]["PC2"] = {{"extends", "PC1"}, {"particles", {{"generator", {{"seed", 2}}}}}};
   doc["cases"]["W"] = {{"extends", "PC2"}, {"boundaries", {{"x", "wall"}}}, {"probes", nullptr}};
@@ -64,11 +50,11 @@ TEST(CaseExtends, MergesObjectsReplacesValuesAndDeletesNulls) {
 }
 
 TEST(CaseExtends, ExtendedCasesGiveDistinctJobsOnlyWhereTheyDiffer) {
-  json doc = quickstart();
+  json doc = quickstart_document();
   doc["factors"] = {{"convection", {"superbee"}}};
   doc.erase("design");
   doc["cases"]["PC2"] = {{"extends", "PC1"}, {"particles", {{"generator", {{"seed", 2}}}}}};
-  json copy = quickstart();
+  json copy = quickstart_document();
   copy["factors"] = doc["factors"];
   copy.erase("design");
   copy["cases"]["PC2"] = copy["cases"]["PC1"];
@@ -80,7 +66,7 @@ TEST(CaseExtends, ExtendedCasesGiveDistinctJobsOnlyWhereTheyDiffer) {
 }
 
 TEST(CaseExtends, UnknownBasesCyclesAndNonStringsAreRefusedWithThePath) {
-  json doc = quickstart();
+  json doc = quickstart_document();
   doc["cases"]["A"] = {{"extends", "B"}};
   doc["cases"]["B"] = {{"extends", "A"}};
   doc["cases"]["S"] = {{"extends", "S"}};
@@ -103,7 +89,7 @@ TEST(CaseExtends, UnknownBasesCyclesAndNonStringsAreRefusedWithThePath) {
 }
 
 TEST(StudyDefaults, FactorsLeftOutTakeTheirDocumentedDefaults) {
-  json doc = quickstart();
+  json doc = quickstart_document();
   doc.erase("factors");
   doc.erase("design");
   const Study s = study_of(doc);
@@ -114,7 +100,7 @@ TEST(StudyDefaults, FactorsLeftOutTakeTheirDocumentedDefaults) {
   EXPECT_EQ(ex.series[0].drag, "bvk");
   EXPECT_EQ(ex.series[0].deposition, "diffusion");
 
-  json partial = quickstart();
+  json partial = quickstart_document();
   partial["factors"] = {{"drag", {"bvk", "hkl"}}};
   partial["design"] = {{"one_at_a_time", json::object()}};  // baseline: first case, first levels
   const auto ex2 = expand(study_of(partial));
@@ -124,7 +110,7 @@ TEST(StudyDefaults, FactorsLeftOutTakeTheirDocumentedDefaults) {
 }
 
 TEST(GridListing, RequestedAndActualDeltaStarAndCells) {
-  json doc = quickstart();
+  json doc = quickstart_document();
   doc["grids"] = {{"delta_star", {3.3, 2.0}}};
   const Study s = study_of(doc);
   const auto rows = grid_listing(s);
@@ -139,7 +125,7 @@ TEST(GridListing, RequestedAndActualDeltaStarAndCells) {
   EXPECT_DOUBLE_EQ(*ex.jobs[0].delta_star_nominal, 3.3);
   EXPECT_NEAR(ex.jobs[0].delta_star, rows[0].actual, 1e-15);
 
-  json cells = quickstart();
+  json cells = quickstart_document();
   cells["grids"] = {{"cells", {{10, 60, 4}}}};
   const auto crows = grid_listing(study_of(cells));
   EXPECT_FALSE(crows[0].requested);
@@ -147,7 +133,7 @@ TEST(GridListing, RequestedAndActualDeltaStarAndCells) {
 }
 
 TEST(GridListing, WarnsAboutNeighboursCloserThanTheRatio) {
-  json doc = quickstart();
+  json doc = quickstart_document();
   doc["grids"] = {{"delta_star", {2.0, 1.5, 1.9}}};  // 2.0 vs 1.9: actual ratio ≈ 1.05
   const auto rows = grid_listing(study_of(doc));
   const auto w = neighbour_warnings(rows);

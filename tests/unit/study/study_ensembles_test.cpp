@@ -10,16 +10,21 @@
 
 #include "core/input_error.h"
 #include "study/study.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
 using nlohmann::json;
-const std::string kSource = GRIDFREE_SOURCE_DIR;
+using test_support::kSourceDir;
+using test_support::quickstart_document;
+using test_support::study_of;
+using test_support::study_problems;
 
 // quickstart with three seeded instances of PC1 (PC1, PC2, PC3) and a PC4 of another domain.
 json three_instances() {
-  json doc = read_json_file(kSource + "/studies/quickstart.json");
+  json doc = quickstart_document();
   doc["cases"]["PC2"] = {{"extends", "PC1"}, {"particles", {{"generator", {{"seed", 2}}}}}};
   doc["cases"]["PC3"] = {{"extends", "PC1"}, {"particles", {{"generator", {{"seed", 3}}}}}};
   doc["cases"]["PC4"] = {{"extends", "PC1"}, {"domain_dp", {31, 200, 10}}};
@@ -27,19 +32,8 @@ json three_instances() {
   return doc;
 }
 
-Study study_of(const json& doc) { return parse_study_document(doc, kSource + "/studies"); }
-
-std::vector<Problem> problems_of(const json& doc) {
-  try {
-    study_of(doc);
-  } catch (const InputError& e) {
-    return e.problems();
-  }
-  return {};
-}
-
 bool has_problem(const json& doc, const std::string& where, const std::string& words) {
-  const auto all = problems_of(doc);
+  const auto all = study_problems(doc);
   return std::any_of(all.begin(), all.end(), [&](const Problem& p) {
     return p.where == where && p.reason.find(words) != std::string::npos;
   });
@@ -75,9 +69,9 @@ TEST(StudyEnsembles, CaseInTwoEnsemblesRefused) {
 TEST(StudyEnsembles, CaseListedTwiceRefused) {
   json doc = three_instances();
   doc["ensembles"]["bubble"] = {"PC1", "PC2", "PC1"};
-  EXPECT_FALSE(problems_of(doc).empty());
+  EXPECT_FALSE(study_problems(doc).empty());
   // The schema's uniqueItems or our own check: either names the ensemble's array or the entry.
-  const auto all = problems_of(doc);
+  const auto all = study_problems(doc);
   EXPECT_TRUE(std::any_of(all.begin(), all.end(),
                           [](const Problem& p) { return p.where.rfind("/ensembles/bubble", 0) == 0; }));
 }
@@ -85,7 +79,7 @@ TEST(StudyEnsembles, CaseListedTwiceRefused) {
 TEST(StudyEnsembles, EnsembleOfOneRefused) {
   json doc = three_instances();
   doc["ensembles"]["bubble"] = {"PC1"};
-  const auto all = problems_of(doc);
+  const auto all = study_problems(doc);
   ASSERT_FALSE(all.empty());
   EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](const Problem& p) { return p.where == "/ensembles/bubble"; }));
 }
@@ -95,9 +89,9 @@ TEST(StudyEnsembles, BadNameAndWrongTypesRefused) {
   doc["ensembles"] = {{"a b", {"PC1", "PC2"}}};
   EXPECT_TRUE(has_problem(doc, "/ensembles/a b", "use letters"));
   doc["ensembles"] = json::array({"PC1"});
-  EXPECT_FALSE(problems_of(doc).empty());
+  EXPECT_FALSE(study_problems(doc).empty());
   doc["ensembles"] = {{"bubble", {"PC1", 3}}};
-  EXPECT_FALSE(problems_of(doc).empty());
+  EXPECT_FALSE(study_problems(doc).empty());
 }
 
 TEST(StudyEnsembles, InstancesShareTheDomain) {
@@ -107,7 +101,7 @@ TEST(StudyEnsembles, InstancesShareTheDomain) {
 }
 
 TEST(StudyEnsembles, SscpStudyDeclaresSixInstances) {
-  const Study s = parse_study(kSource + "/studies/sscp_paper.json");
+  const Study s = parse_study(kSourceDir / "studies/sscp_paper.json");
   ASSERT_EQ(s.ensembles.count("sscp"), 1u);
   EXPECT_EQ(s.ensembles.at("sscp"), (std::vector<std::string>{"t1", "t2", "t3", "t4", "t5", "t6"}));
 }

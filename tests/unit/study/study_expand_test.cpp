@@ -10,22 +10,24 @@
 #include "study/study.h"
 #include "job/memory_estimate.h"
 #include "study/study_plan.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
-const std::string kSource = GRIDFREE_SOURCE_DIR;
+using test_support::kSourceDir;
+using test_support::quickstart_document;
+using test_support::study_of;
 
 nlohmann::json base_study() {
-  auto doc = read_json_file(kSource + "/studies/quickstart.json");
+  auto doc = quickstart_document();
   doc["cases"]["PC2"] = doc["cases"]["PC1"];
   doc["cases"]["PC2"]["particles"]["generator"]["seed"] = 2;
   doc["factors"] = {{"convection", {"superbee", "fou", "muscl"}}, {"fwhm_dp", {6, 4}}, {"drag", {"bvk", "hkl"}}};
   doc["grids"] = {{"delta_star", {3.3, 2.5, 2.0}}};
   return doc;
 }
-
-Study study_of(const nlohmann::json& doc) { return parse_study_document(doc, kSource + "/studies"); }
 
 TEST(StudyExpand, FactorialIsEveryCombination) {
   auto doc = base_study();
@@ -49,7 +51,7 @@ TEST(StudyExpand, OneAtATimeIsBaselinePlusEachOtherLevel) {
 }
 
 TEST(StudyExpand, PaperStudyHasTwelveSeriesOnEighteenGrids) {
-  const auto study = parse_study(kSource + "/studies/bursting_bubble_paper.json");
+  const auto study = parse_study(kSourceDir / "studies/bursting_bubble_paper.json");
   const auto ex = expand(study);
   // PC1 + {PC2, PC3, PC3t} + {fou, muscl} + {4, 8, 16} + {gidaspow_blend, wen_yu, hkl}
   EXPECT_EQ(ex.series.size(), 12u);

@@ -6,17 +6,18 @@
 
 #include "core/input_error.h"
 #include "study/study.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
 using nlohmann::json;
-const std::string kSource = GRIDFREE_SOURCE_DIR;
-
-Study study_of(const json& doc) { return parse_study_document(doc, kSource + "/studies"); }
+using test_support::quickstart_document;
+using test_support::study_of;
 
 TEST(StudyNumerics, CopiedIntoEveryJob) {
-  json doc = read_json_file(kSource + "/studies/quickstart.json");
+  json doc = quickstart_document();
   doc["numerics"] = {{"tolerances", {{"linear", 1e-4}, {"filter", 1e-9}, {"steady", 1e-6}}},
                      {"max_iterations", 1234},
                      {"stall_window", 150},
@@ -40,7 +41,7 @@ TEST(StudyNumerics, CopiedIntoEveryJob) {
 }
 
 TEST(StudyNumerics, OutOfRangeValuesAreRefusedWithTheirPath) {
-  json doc = read_json_file(kSource + "/studies/quickstart.json");
+  json doc = quickstart_document();
   doc["numerics"]["tolerances"]["linear"] = 2.0;
   doc["numerics"]["stall_window"] = -5;
   doc["timeout_s"] = -1;

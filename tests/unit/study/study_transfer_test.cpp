@@ -8,35 +8,28 @@
 #include "job/job_hash.h"
 #include "study/study.h"
 #include "study/study_transfer.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
 using nlohmann::json;
-const std::string kSource = GRIDFREE_SOURCE_DIR;
+using test_support::kSourceDir;
+using test_support::quickstart_document;
+using test_support::refusal;
+using test_support::study_of;
 
-json quickstart() {
-  json doc = read_json_file(kSource + "/studies/quickstart.json");
+json superbee_quickstart() {
+  json doc = quickstart_document();
   doc.erase("design");
   doc["factors"] = {{"convection", {"superbee"}}};
   doc["grids"] = {{"delta_star", {2.0, 1.0}}};
   return doc;
 }
 
-Study study_of(const json& doc) { return parse_study_document(doc, kSource + "/studies"); }
-
-// Every problem's JSON pointer, for refusal tests.
-std::string refusal(const json& doc) {
-  try {
-    study_of(doc);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
-}
-
 TEST(StudyTransfer, ObjectLevelsReachTheJobsAndNameTheSeries) {
-  json doc = quickstart();
+  json doc = superbee_quickstart();
   doc["factors"]["deposition"] = {"fm18", {{"name", "cic"}, {"pre_deposition", "trilinear"}, {"sampling", "trilinear"}},
                                   {{"pre_deposition", "centroid"}, {"sampling", "cell"}}};
   const auto ex = expand(study_of(doc));
@@ -59,7 +52,7 @@ TEST(StudyTransfer, ObjectLevelsReachTheJobsAndNameTheSeries) {
 }
 
 TEST(StudyTransfer, ObjectLevelsAreMergedOverTheStudysDeposition) {
-  json doc = quickstart();
+  json doc = superbee_quickstart();
   doc["numerics"]["deposition"] = {{"diffusivity", "mfix"}};
   doc["factors"]["deposition"] = {json{{"name", "cic8"}, {"integration", "steps"}, {"steps", 8}}};
   const auto ex = expand(study_of(doc));
@@ -80,7 +73,7 @@ TEST(StudyTransfer, ObjectLevelsAreMergedOverTheStudysDeposition) {
 TEST(StudyTransfer, NameLevelsWriteTheJobsAsBefore) {
   // The documents studies wrote before object levels existed (spelled out
   // here independently): their hashes must not change.
-  json doc = quickstart();
+  json doc = superbee_quickstart();
   doc["numerics"]["deposition"] = {{"diffusivity", "seed"}};
   doc["factors"]["deposition"] = {"diffusion", "centroid", "fm18", "mfix"};
   const Study s = study_of(doc);
@@ -100,7 +93,7 @@ TEST(StudyTransfer, NameLevelsWriteTheJobsAsBefore) {
 }
 
 TEST(StudyTransfer, ContradictoryLevelsAreRefusedWithTheirPath) {
-  json doc = quickstart();
+  json doc = superbee_quickstart();
   doc["factors"]["deposition"] = {"fm18", {{"name", "bad"}, {"integration", "exact"}, {"steps", 4}}};
   EXPECT_NE(refusal(doc).find("/factors/deposition/1/steps"), std::string::npos) << refusal(doc);
 
@@ -116,7 +109,7 @@ TEST(StudyTransfer, ContradictoryLevelsAreRefusedWithTheirPath) {
 }
 
 TEST(StudyTransfer, DuplicateTransfersAndNamesAreRefused) {
-  json doc = quickstart();
+  json doc = superbee_quickstart();
   // The preset and its explicit spelling are one transfer (one job).
   doc["factors"]["deposition"] = {"fm18", {{"name", "paper"}, {"preset", "fm18"}}};
   EXPECT_NE(refusal(doc).find("/factors/deposition/1"), std::string::npos) << refusal(doc);
@@ -133,7 +126,7 @@ TEST(StudyTransfer, DuplicateTransfersAndNamesAreRefused) {
 }
 
 TEST(StudyTransfer, OneAtATimeVariesTheTransferFromANamedBaseline) {
-  json doc = quickstart();
+  json doc = superbee_quickstart();
   doc["factors"]["convection"] = {"superbee", "fou"};
   doc["factors"]["deposition"] = {{{"name", "cic"}, {"pre_deposition", "trilinear"}, {"sampling", "trilinear"}},
                                   "fm18", {{"name", "ngp-tri"}, {"pre_deposition", "centroid"}}};
@@ -151,7 +144,7 @@ TEST(StudyTransfer, OneAtATimeVariesTheTransferFromANamedBaseline) {
 }
 
 TEST(StudyTransfer, TheShippedExampleComparesThreeTransfersWithTheAlignmentCheck) {
-  const auto ex = expand(parse_study(kSource + "/studies/transfer_alignment.json"));
+  const auto ex = expand(parse_study(kSourceDir / "studies/transfer_alignment.json"));
   ASSERT_EQ(ex.series.size(), 3u);
   EXPECT_EQ(ex.jobs.size(), 12u);
   EXPECT_EQ(ex.alignment.size(), 3u * 2u * 3u);

@@ -10,13 +10,18 @@
 
 #include "study/study_plan.h"
 #include "study/target_plan.h"
+#include "project_paths.h"
+#include "quickstart_study.h"
+#include "study_documents.h"
 
 namespace gridfree {
 namespace {
 
-const std::string kSource = GRIDFREE_SOURCE_DIR;
+using test_support::kSourceDir;
+using test_support::quickstart_document;
+using test_support::study_of;
 
-Study quickstart() { return parse_study(kSource + "/studies/quickstart.json"); }  // Δ* 2, 1.333, 1, 0.8, 0.667
+Study quickstart_study() { return parse_study(kSourceDir / "studies/quickstart.json"); }  // Δ* 2, 1.333, 1, 0.8, 0.667
 
 TEST(TargetPlan, FitRecoversAnExactPowerLaw) {
   std::vector<std::array<double, 2>> pts;
@@ -39,9 +44,9 @@ TEST(TargetPlan, TooLittleDataIsAPriori) {
 }
 
 TEST(TargetPlan, NeedsGridsDownToTheFirstMeetingTheTargetAndAtLeastFive) {
-  auto doc = read_json_file(kSource + "/studies/quickstart.json");
+  auto doc = quickstart_document();
   doc["grids"] = {{"delta_star", {1.6, 2.0, 1.28, 1.02, 0.82, 0.66, 0.52}}};  // any order: sorted coarse to fine
-  const Study study = parse_study_document(doc, kSource + "/studies");
+  const Study study = study_of(doc);
   RdeModel m;
   m.a = 0.01;
   m.p = 1;  // RDE = 1 %·Δ*: 2, 1.6, 1.28, 1.02, 0.82, 0.66, 0.52 %
@@ -66,7 +71,7 @@ TEST(TargetPlan, NeedsGridsDownToTheFirstMeetingTheTargetAndAtLeastFive) {
 TEST(TargetPlan, UnreachableTargetUsesEveryGridAndSaysSo) {
   RdeModel m;
   m.a = 0.01;
-  const auto plan = plan_for_target(quickstart(), 0.001, m);
+  const auto plan = plan_for_target(quickstart_study(), 0.001, m);
   EXPECT_FALSE(plan.cases.front().reachable);
   EXPECT_EQ(plan.cases.front().grids_needed, 5u);
   EXPECT_NE(target_plan_text(plan).find("not reachable"), std::string::npos);
@@ -75,9 +80,9 @@ TEST(TargetPlan, UnreachableTargetUsesEveryGridAndSaysSo) {
 
 TEST(TargetPlan, CostScaleMultipliesTheCostModel) {
   RdeModel m;
-  const auto one = plan_for_target(quickstart(), 0.01, m);
+  const auto one = plan_for_target(quickstart_study(), 0.01, m);
   m.cost_scale = 3;
-  const auto three = plan_for_target(quickstart(), 0.01, m);
+  const auto three = plan_for_target(quickstart_study(), 0.01, m);
   EXPECT_NEAR(three.total_cpu_s, 3 * one.total_cpu_s, 1e-9 * one.total_cpu_s);
 }
 
@@ -85,7 +90,7 @@ TEST(TargetPlan, CostScaleMultipliesTheCostModel) {
 // grid's cost in place of cost_scale × the a-priori model: one sample at
 // ratio 1.7 of the base model makes every grid cost 1.7 × base.
 TEST(TargetPlan, HistoryOfSimilarJobsSetsTheCosts) {
-  const Study s = quickstart();
+  const Study s = quickstart_study();
   RdeModel m;
   m.cost_scale = 3;  // not used where the history applies
   const auto key = design_series(s).front();
@@ -108,7 +113,7 @@ TEST(TargetPlan, HistoryOfSimilarJobsSetsTheCosts) {
 // The header says where the costs come from: the history where it applied
 // to every grid, the a-priori model (and its scale) where it applied to none.
 TEST(TargetPlan, HeaderNamesTheCostSourceThatWasUsed) {
-  const Study s = quickstart();
+  const Study s = quickstart_study();
   RdeModel m;
   m.cost_scale = 3;
   const auto key = design_series(s).front();

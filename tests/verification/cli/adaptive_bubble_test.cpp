@@ -25,31 +25,26 @@
 
 #include <nlohmann/json.hpp>
 
+#include "project_paths.h"
+#include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource = GRIDFREE_SOURCE_DIR;
-const fs::path kGridfree = fs::path(GRIDFREE_BIN_DIR) / "gridfree";
+using gridfree::test_support::kGridfreeExe;
+using gridfree::test_support::quickstart_document;
+using gridfree::test_support::sqlite_query;
 constexpr double kTarget = 0.01;
 
 gridfree::test_support::CommandRun gridfree_in(const fs::path& dir, const std::string& args) {
-  return gridfree::test_support::run_command("cd '" + dir.string() + "' && '" + kGridfree.string() + "' " + args,
+  return gridfree::test_support::run_command("cd '" + dir.string() + "' && '" + kGridfreeExe.string() + "' " + args,
                                              dir / "stderr.txt");
 }
 
-std::string sql(const fs::path& db, const std::string& query) {
-  auto r = gridfree::test_support::run_command("sqlite3 '" + db.string() + "' \"" + query + "\"",
-                                               db.parent_path() / "sql.txt");
-  while (!r.out.empty() && r.out.back() == '\n') r.out.pop_back();
-  return r.out;
-}
-
 void write_study(const fs::path& dir, const std::string& name, const nlohmann::json& grids) {
-  std::ifstream in(kSource / "studies/quickstart.json");
-  auto doc = nlohmann::json::parse(in);
+  auto doc = quickstart_document();
   doc["name"] = name;
   auto c = doc["cases"]["PC1"];
   c["domain_dp"] = {20, 60, 10};
@@ -63,7 +58,7 @@ void write_study(const fs::path& dir, const std::string& name, const nlohmann::j
 
 // (h, f) of a database's only series, coarse to fine.
 std::vector<std::pair<double, double>> series_of(const fs::path& db) {
-  std::stringstream rows(sql(db, "SELECT delta_star, dp_star FROM v_results ORDER BY delta_star DESC"));
+  std::stringstream rows(sqlite_query(db, "SELECT delta_star, dp_star FROM v_results ORDER BY delta_star DESC"));
   std::vector<std::pair<double, double>> out;
   double h = 0, f = 0;
   char bar = 0;
@@ -102,12 +97,12 @@ TEST(AdaptiveBubble, StopsAtTheFirstGridMeetingTheTargetWithTheFixedSeriesF0) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto a = dir / "a.sqlite", f = dir / "f.sqlite";
 
-  ASSERT_EQ(sql(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged")
-      << sql(a, "SELECT adaptive_note FROM series");
+  ASSERT_EQ(sqlite_query(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged")
+      << sqlite_query(a, "SELECT adaptive_note FROM series");
   const auto fixed = series_of(f), adaptive = series_of(a);
   ASSERT_EQ(fixed.size(), ladder.size());
   ASSERT_LT(adaptive.size(), fixed.size()) << "the target should be met before the finest rung";
-  EXPECT_NE(sql(a, "SELECT adaptive_note FROM series").find("saved an estimated"), std::string::npos);
+  EXPECT_NE(sqlite_query(a, "SELECT adaptive_note FROM series").find("saved an estimated"), std::string::npos);
   // Same jobs, same numbers: the adaptive grids are the ladder's first ones.
   for (std::size_t k = 0; k < adaptive.size(); ++k) {
     EXPECT_NEAR(adaptive[k].first, fixed[k].first, 1e-12);
@@ -121,8 +116,10 @@ TEST(AdaptiveBubble, StopsAtTheFirstGridMeetingTheTargetWithTheFixedSeriesF0) {
   EXPECT_EQ(verdict, "converged");
   EXPECT_LE(rde, kTarget);
 
-  const double f0_a = std::stod(sql(a, "SELECT f0 FROM v_series")), u_a = std::stod(sql(a, "SELECT finest_u FROM v_series"));
-  const double f0_f = std::stod(sql(f, "SELECT f0 FROM v_series")), u_f = std::stod(sql(f, "SELECT finest_u FROM v_series"));
+  const double f0_a = std::stod(sqlite_query(a, "SELECT f0 FROM v_series")),
+               u_a = std::stod(sqlite_query(a, "SELECT finest_u FROM v_series"));
+  const double f0_f = std::stod(sqlite_query(f, "SELECT f0 FROM v_series")),
+               u_f = std::stod(sqlite_query(f, "SELECT finest_u FROM v_series"));
   EXPECT_LE(std::abs(f0_a - f0_f), std::max(u_a, u_f)) << "adaptive " << f0_a << " ± " << u_a << ", fixed " << f0_f
                                                        << " ± " << u_f;
 }
@@ -139,8 +136,8 @@ TEST(AdaptiveBubble, ALadderStartedTooCoarseStopsOnTheWindowOfItsFinestGrids) {
   r = gridfree_in(dir, "run adaptive.json -j 2 --db a.sqlite");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto a = dir / "a.sqlite", f = dir / "f.sqlite";
-  const std::string note = sql(a, "SELECT adaptive_note FROM series");
-  ASSERT_EQ(sql(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged") << note;
+  const std::string note = sqlite_query(a, "SELECT adaptive_note FROM series");
+  ASSERT_EQ(sqlite_query(a, "SELECT adaptive_status, verdict FROM series"), "target_met|converged") << note;
   EXPECT_NE(note.find("coarser one"), std::string::npos) << note;
   // Without the window it would not have stopped: all its grids together
   // are not converged.
@@ -152,8 +149,10 @@ TEST(AdaptiveBubble, ALadderStartedTooCoarseStopsOnTheWindowOfItsFinestGrids) {
   report << md.rdbuf();
   EXPECT_NE(report.str().find("**converged**"), std::string::npos) << report.str().substr(0, 2000);
   EXPECT_EQ(report.str().find("**pre-asymptotic**"), std::string::npos);
-  const double f0_a = std::stod(sql(a, "SELECT f0 FROM v_series")), u_a = std::stod(sql(a, "SELECT finest_u FROM v_series"));
-  const double f0_f = std::stod(sql(f, "SELECT f0 FROM v_series")), u_f = std::stod(sql(f, "SELECT finest_u FROM v_series"));
+  const double f0_a = std::stod(sqlite_query(a, "SELECT f0 FROM v_series")),
+               u_a = std::stod(sqlite_query(a, "SELECT finest_u FROM v_series"));
+  const double f0_f = std::stod(sqlite_query(f, "SELECT f0 FROM v_series")),
+               u_f = std::stod(sqlite_query(f, "SELECT finest_u FROM v_series"));
   EXPECT_LE(std::abs(f0_a - f0_f), std::max(u_a, u_f)) << "adaptive " << f0_a << " ± " << u_a << ", fixed " << f0_f
                                                        << " ± " << u_f;
 }

@@ -24,7 +24,7 @@
 namespace gridfree {
 namespace {
 
-JobSpec baseline(double delta_star) { return test_support::bubble_baseline_job(delta_star); }
+using test_support::bubble_baseline_job;
 
 double series_estimate(const JobSpec& job, const ParticleSet& set) {
   const CaseSpec& c = job.case_spec;
@@ -51,7 +51,7 @@ double series_estimate(const JobSpec& job, const ParticleSet& set) {
 }
 
 TEST(BurstingBubble, CoarseGridConvergesNearTheSeriesEstimate) {
-  const JobSpec job = baseline(2.0);
+  const JobSpec job = bubble_baseline_job(2.0);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
   SolveOptions options;
   const auto dir = std::filesystem::temp_directory_path() / "gridfree_bb_vtk";
@@ -80,7 +80,7 @@ TEST(BurstingBubble, CoarseGridConvergesNearTheSeriesEstimate) {
 }
 
 TEST(BurstingBubble, ResultDoesNotDependOnTheThreadCount) {
-  const JobSpec job = baseline(2.0);
+  const JobSpec job = bubble_baseline_job(2.0);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
@@ -104,7 +104,7 @@ TEST(BurstingBubble, ResultDoesNotDependOnTheThreadCount) {
 // the steady tolerance, 1e-5 relative. The coarse level is forced on this
 // small grid by lowering nested_min_cells; its result is recorded.
 TEST(BurstingBubble, NestedStartReachesTheSameAnswer) {
-  const JobSpec job = baseline(2.0);
+  const JobSpec job = bubble_baseline_job(2.0);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
   SolveOptions plain;
   plain.nested_start = false;
@@ -128,7 +128,7 @@ TEST(BurstingBubble, NestedStartReachesTheSameAnswer) {
 // starts from the analytic warm start, so it does exactly what a run without
 // the nested start does (same iterations, same bits).
 TEST(BurstingBubble, AnAbandonedCoarseLevelIsReportedAndTheFineGridStartsAnalytically) {
-  const JobSpec job = baseline(2.0);
+  const JobSpec job = bubble_baseline_job(2.0);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
   SolveOptions plain;
   plain.nested_start = false;
@@ -149,7 +149,7 @@ TEST(BurstingBubble, AnAbandonedCoarseLevelIsReportedAndTheFineGridStartsAnalyti
 }
 
 TEST(BurstingBubble, NestedStartDoesNotDependOnTheThreadCount) {
-  const JobSpec job = baseline(2.0);
+  const JobSpec job = bubble_baseline_job(2.0);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
   SolveOptions nested;
   nested.nested_min_cells = 1000;

@@ -40,7 +40,7 @@ struct Outcome {
   long filter = 0;        // filter iterations (first deposition)
 };
 
-Outcome solve(const json& doc) {
+Outcome solve_outcome(const json& doc) {
   const JobSpec job = parse_job(doc, std::filesystem::current_path());
   SolveOptions opts;
   long inner = 0;
@@ -57,7 +57,7 @@ Outcome solve(const json& doc) {
 }
 
 const Outcome& baseline() {
-  static const Outcome b = solve(coarse_job());
+  static const Outcome b = solve_outcome(coarse_job());
   return b;
 }
 
@@ -67,7 +67,7 @@ bool moved(double a, double b) { return std::abs(a - b) > 1e-9 * std::abs(b); }
 void expect_dp_moves(const std::string& pointer, const json& value) {
   json doc = coarse_job();
   doc[json::json_pointer(pointer)] = value;
-  const Outcome o = solve(doc);
+  const Outcome o = solve_outcome(doc);
   ASSERT_EQ(baseline().status, "converged");
   EXPECT_EQ(o.status, "converged") << pointer;
   EXPECT_TRUE(moved(o.dp, baseline().dp)) << pointer << " = " << value.dump() << " left dp* at " << o.dp;
@@ -91,9 +91,9 @@ TEST(FieldEffect, CaseFieldsMoveDpStar) {
 TEST(FieldEffect, ParticleVelocitySeedMovesDpStarWhenParticlesMove) {
   json doc = coarse_job();
   doc["case"]["particle_velocity"] = {{"thermal_cm_s", 5.0}, {"seed", 0}};
-  const Outcome a = solve(doc);
+  const Outcome a = solve_outcome(doc);
   doc["case"]["particle_velocity"]["seed"] = 1;
-  const Outcome b = solve(doc);
+  const Outcome b = solve_outcome(doc);
   EXPECT_TRUE(moved(a.dp, b.dp)) << a.dp << " vs " << b.dp;
 }
 
@@ -110,7 +110,7 @@ TEST(FieldEffect, NumericsFieldsMoveDpStar) {
 TEST(FieldEffect, OutletPressureOnlyShiftsThePressureLevel) {
   json doc = coarse_job();
   doc["case"]["boundaries"]["y_high"]["pressure_dyn_cm2"] = 1000.0;
-  const Outcome o = solve(doc);
+  const Outcome o = solve_outcome(doc);
   // dp* is a difference of pressures: the level cancels up to round-off of
   // p ≈ 1000 dyn/cm² against differences of ≈ 400 (ρU0² dp*), so 1e-9.
   EXPECT_NEAR(o.dp, baseline().dp, 1e-9 * 1000.0 / (1e-3 * 400.0));
@@ -119,12 +119,12 @@ TEST(FieldEffect, OutletPressureOnlyShiftsThePressureLevel) {
 TEST(FieldEffect, TighterTolerancesSpendMoreIterations) {
   json doc = coarse_job();
   doc["numerics"]["tolerances"]["steady"] = 1e-7;
-  const Outcome steady = solve(doc);
+  const Outcome steady = solve_outcome(doc);
   EXPECT_GT(steady.iterations, baseline().iterations);
 
   doc = coarse_job();
   doc["numerics"]["tolerances"]["linear"] = 1e-6;
-  const Outcome linear = solve(doc);
+  const Outcome linear = solve_outcome(doc);
   EXPECT_EQ(linear.status, "converged");
   EXPECT_GT(linear.inner / std::max(1, linear.iterations), baseline().inner / std::max(1, baseline().iterations))
       << "inner iterations per outer iteration";
@@ -136,16 +136,16 @@ TEST(FieldEffect, TighterTolerancesSpendMoreIterations) {
   doc = coarse_job();
   doc["numerics"]["deposition"]["integration"] = "steps";
   doc["numerics"]["deposition"]["fwhm_dp"] = 20;
-  const Outcome tight_filter = solve(doc);
+  const Outcome tight_filter = solve_outcome(doc);
   doc["numerics"]["tolerances"]["filter"] = 1e-4;
-  const Outcome loose_filter = solve(doc);
+  const Outcome loose_filter = solve_outcome(doc);
   EXPECT_LT(loose_filter.filter, tight_filter.filter);
 }
 
 TEST(FieldEffect, IterationCapBelowTheNeedGivesNotConverged) {
   json doc = coarse_job();
   doc["numerics"]["max_iterations"] = 5;
-  EXPECT_EQ(solve(doc).status, "not_converged");
+  EXPECT_EQ(solve_outcome(doc).status, "not_converged");
 }
 
 }  // namespace

@@ -16,10 +16,10 @@
 namespace gridfree {
 namespace {
 
-JobSpec uniform_bed() { return test_support::uniform_bed_job(0.3, 20.0, DragLaw::kBvk); }
+JobSpec bvk_bed() { return test_support::uniform_bed_job(0.3, 20.0, DragLaw::kBvk); }
 
 TEST(HonestFailure, IterationCapGivesNotConvergedWithTheResidualsInTheReason) {
-  JobSpec job = uniform_bed();
+  JobSpec job = bvk_bed();
   job.numerics.max_iterations = 3;
   SolveOptions options;
   options.cold_start = true;
@@ -32,7 +32,7 @@ TEST(HonestFailure, IterationCapGivesNotConvergedWithTheResidualsInTheReason) {
 }
 
 TEST(HonestFailure, ASteadyPressureDropIsNotEnoughWhenMomentumIsUnbalanced) {
-  JobSpec job = uniform_bed();
+  JobSpec job = bvk_bed();
   job.numerics.max_iterations = 300;
   SolveOptions options;
   options.cold_start = true;
@@ -45,7 +45,7 @@ TEST(HonestFailure, ASteadyPressureDropIsNotEnoughWhenMomentumIsUnbalanced) {
 }
 
 TEST(HonestFailure, OverRelaxedIterationsAreReportedAsDivergedWithoutANumber) {
-  JobSpec job = uniform_bed();
+  JobSpec job = bvk_bed();
   SolveOptions options;
   options.cold_start = true;
   options.simple.relax_u = 6.0;
@@ -63,7 +63,7 @@ TEST(HonestFailure, TheSameBedConvergesWithTheDefaultRelaxation) {
   // The control for the test above: only α_u differs.
   SolveOptions options;
   options.cold_start = true;
-  const JobResult r = solve_with_particles(uniform_bed(), ParticleSet{}, options);
+  const JobResult r = solve_with_particles(bvk_bed(), ParticleSet{}, options);
   EXPECT_EQ(r.status, SolveStatus::kConverged) << r.reason;
   ASSERT_TRUE(r.dp_star.has_value());
   EXPECT_TRUE(std::isfinite(*r.dp_star));

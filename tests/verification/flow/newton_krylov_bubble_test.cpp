@@ -14,14 +14,9 @@
 namespace gridfree {
 namespace {
 
-JobSpec baseline(double delta_star, double steady) {
-  JobSpec job = test_support::bubble_baseline_job(delta_star);
-  job.numerics.tolerances.steady = steady;
-  job.numerics.max_iterations = 5000;
-  return job;
-}
+using test_support::bubble_fixed_point_job;
 
-JobResult solve(const JobSpec& job, const ParticleSet& set, int restart, int threads) {
+JobResult solve_with_restart(const JobSpec& job, const ParticleSet& set, int restart, int threads) {
   omp_set_num_threads(threads);
   SolveOptions options;
   options.simple.newton_krylov_restart = restart;
@@ -29,13 +24,13 @@ JobResult solve(const JobSpec& job, const ParticleSet& set, int restart, int thr
 }
 
 TEST(NewtonKrylovBubble, ReachesTheSimplecFixedPointWithinTheIterativeTolerance) {
-  const JobSpec job = baseline(3.3, 1e-5);
+  const JobSpec job = bubble_fixed_point_job(3.3, 1e-5);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
   // Reference: plain SIMPLEC to a steady tolerance 1000× tighter, so its own
   // iterative error is negligible beside the 1e-5 asked of the other two.
-  const JobResult ref = solve(baseline(3.3, 1e-8), set, 0, 1);
-  const JobResult simplec = solve(job, set, 0, 1);
-  const JobResult nk = solve(job, set, 10, 1);
+  const JobResult ref = solve_with_restart(bubble_fixed_point_job(3.3, 1e-8), set, 0, 1);
+  const JobResult simplec = solve_with_restart(job, set, 0, 1);
+  const JobResult nk = solve_with_restart(job, set, 10, 1);
   ASSERT_EQ(ref.status, SolveStatus::kConverged) << ref.reason;
   ASSERT_EQ(simplec.status, SolveStatus::kConverged) << simplec.reason;
   ASSERT_EQ(nk.status, SolveStatus::kConverged) << nk.reason;
@@ -60,10 +55,10 @@ TEST(NewtonKrylovBubble, ReachesTheSimplecFixedPointWithinTheIterativeTolerance)
 TEST(NewtonKrylovBubble, IsBitwiseIndependentOfTheThreadCount) {
   // Δ* = 2 (15 × 100 × 5): large enough that the face loops and the
   // Krylov inner products (4 × 7500 entries, 8 blocks) run in parallel.
-  const JobSpec job = baseline(2.0, 1e-5);
+  const JobSpec job = bubble_fixed_point_job(2.0, 1e-5);
   const ParticleSet set = load_particles(job.case_spec.particles, job.case_spec);
-  const JobResult one = solve(job, set, 10, 1);
-  const JobResult two = solve(job, set, 10, 2);
+  const JobResult one = solve_with_restart(job, set, 10, 1);
+  const JobResult two = solve_with_restart(job, set, 10, 2);
   ASSERT_EQ(one.status, SolveStatus::kConverged) << one.reason;
   ASSERT_TRUE(one.dp_star && two.dp_star);
   EXPECT_EQ(one.iterations, two.iterations);

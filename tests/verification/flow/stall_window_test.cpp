@@ -43,12 +43,12 @@ json sscp_t2_coarsest() {
             {"max_iterations", 20000}}}};
 }
 
-JobResult solve(const json& doc) { return solve_job(parse_job(doc, fs::current_path()), SolveOptions{}); }
+JobResult solve_document(const json& doc) { return solve_job(parse_job(doc, fs::current_path()), SolveOptions{}); }
 
 TEST(StallWindow, EndsALimitCycleAsNotConvergedAndSaysSo) {
   json doc = sscp_t2_coarsest();
   doc["numerics"]["stall_window"] = 200;
-  const JobResult stopped = solve(doc);
+  const JobResult stopped = solve_document(doc);
   EXPECT_EQ(stopped.status, SolveStatus::kNotConverged);
   EXPECT_GT(stopped.iterations, 200);
   EXPECT_LT(stopped.iterations, 1000);
@@ -59,7 +59,7 @@ TEST(StallWindow, EndsALimitCycleAsNotConvergedAndSaysSo) {
   // Without the window, 200 iterations more: still not converged.
   doc["numerics"].erase("stall_window");
   doc["numerics"]["max_iterations"] = stopped.iterations + 200;
-  const JobResult capped = solve(doc);
+  const JobResult capped = solve_document(doc);
   EXPECT_EQ(capped.status, SolveStatus::kNotConverged);
   EXPECT_EQ(capped.iterations, stopped.iterations + 200);
   EXPECT_NE(capped.reason.find("iterations"), std::string::npos);
@@ -68,11 +68,11 @@ TEST(StallWindow, EndsALimitCycleAsNotConvergedAndSaysSo) {
 TEST(StallWindow, LeavesAConvergingJobBitForBit) {
   json doc = test::contract_job();
   doc["numerics"]["grid"] = {{"cells", {15, 100, 5}}};
-  const JobResult plain = solve(doc);
+  const JobResult plain = solve_document(doc);
   ASSERT_EQ(plain.status, SolveStatus::kConverged);
   ASSERT_GT(plain.iterations, 20);
   doc["numerics"]["stall_window"] = 10;  // far shorter than the run
-  const JobResult windowed = solve(doc);
+  const JobResult windowed = solve_document(doc);
   EXPECT_EQ(windowed.status, SolveStatus::kConverged);
   EXPECT_EQ(windowed.iterations, plain.iterations);
   EXPECT_EQ(windowed.dp_star, plain.dp_star);

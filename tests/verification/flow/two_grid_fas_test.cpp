@@ -19,23 +19,19 @@
 namespace gridfree {
 namespace {
 
-JobSpec baseline(double steady) {
-  JobSpec job = test_support::bubble_baseline_job(2.0);
-  job.numerics.tolerances.steady = steady;
-  job.numerics.max_iterations = 5000;
-  return job;
-}
+using test_support::bubble_fixed_point_job;
 
 TEST(TwoGridFas, ReachesTheSimplecFixedPointWithinTheIterativeTolerance) {
   omp_set_num_threads(1);
-  const ParticleSet set = load_particles(baseline(1e-5).case_spec.particles, baseline(1e-5).case_spec);
+  const ParticleSet set = load_particles(bubble_fixed_point_job(2.0, 1e-5).case_spec.particles,
+                                         bubble_fixed_point_job(2.0, 1e-5).case_spec);
   SolveOptions options;
   options.nested_min_cells = 5000;  // a coarse level for the 7500-cell grid
   // Reference: plain SIMPLEC to a steady tolerance 1000× tighter.
-  const JobResult ref = solve_with_particles(baseline(1e-8), set, options);
+  const JobResult ref = solve_with_particles(bubble_fixed_point_job(2.0, 1e-8), set, options);
   options.simple.fas_smoothing_sweeps = 4;
   options.simple.fas_coarse_sweeps = 10;
-  const JobResult fas = solve_with_particles(baseline(1e-5), set, options);
+  const JobResult fas = solve_with_particles(bubble_fixed_point_job(2.0, 1e-5), set, options);
   ASSERT_EQ(ref.status, SolveStatus::kConverged) << ref.reason;
   ASSERT_EQ(fas.status, SolveStatus::kConverged) << fas.reason;
   ASSERT_TRUE(ref.dp_star && fas.dp_star);

@@ -40,6 +40,15 @@ class ProblemList {
   void append(const std::vector<Problem>& more) {
     problems_.insert(problems_.end(), more.begin(), more.end());
   }
+  // Adds the problem unless one is already reported at `where`.
+  void add_once(const std::string& where, std::string reason) {
+    if (!has(where)) add(where, std::move(reason));
+  }
+  bool has(const std::string& where) const {
+    for (const auto& p : problems_)
+      if (p.where == where) return true;
+    return false;
+  }
   bool empty() const { return problems_.empty(); }
   const std::vector<Problem>& problems() const { return problems_; }
   void throw_if_any() const {

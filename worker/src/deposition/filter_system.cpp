@@ -3,6 +3,7 @@
 // The assembly loop runs in parallel (each cell writes only its own
 // entries); sums are sequential, so results do not depend on the thread count.
 #include "deposition/filter_system.h"
+#include "linalg/parallel_threshold.h"
 
 #include <cmath>
 #include <cstddef>
@@ -15,7 +16,7 @@ Stencil7 assemble_filter_step(const Grid& grid, const std::array<double, 3>& nu,
   for (int axis = 0; axis < 3; ++axis)
     if (nu[axis] > 0 && grid.n[axis] > 1) a[axis] = nu[axis] * dtau / (grid.h(axis) * grid.h(axis));
   const int nx = grid.n[0], ny = grid.n[1], nz = grid.n[2];
-#pragma omp parallel for schedule(static) if (grid.cells() > 20000)
+#pragma omp parallel for schedule(static) if (grid.cells() > kParallelCells)
   for (int k = 0; k < nz; ++k) {
     for (int j = 0; j < ny; ++j) {
       for (int i = 0; i < nx; ++i) {

@@ -33,11 +33,6 @@ std::size_t cell_face(const Grid& g, const FaceLayout& lay, std::array<int, 3> x
   return lay.index(x);
 }
 
-// Pointers to the Stencil7 neighbour arrays: nb[b][side].
-std::array<std::array<std::vector<double>*, 2>, 3> neighbour_arrays(Stencil7& s) {
-  return {{{&s.aw, &s.ae}, {&s.as, &s.an}, {&s.ab, &s.at}}};
-}
-
 }  // namespace
 
 void assemble_momentum(const FlowProblem& problem, const FlowState& state,

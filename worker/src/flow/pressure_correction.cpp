@@ -7,13 +7,6 @@
 #include "flow/parallel.h"
 
 namespace gridfree {
-namespace {
-
-std::array<std::array<std::vector<double>*, 2>, 3> neighbour_arrays(Stencil7& s) {
-  return {{{&s.aw, &s.ae}, {&s.as, &s.an}, {&s.ab, &s.at}}};
-}
-
-}  // namespace
 
 PressureCorrectionResult correct_pressure(const FlowProblem& problem, FlowState& state,
                                           const FaceVector& d, double relax_p,

@@ -13,25 +13,9 @@
 #include "flow/residuals.h"
 #include "flow/simplec_sweep.h"
 #include "flow/stall_monitor.h"
+#include "flow/phase_clock.h"
 
 namespace gridfree {
-namespace {
-
-// Adds the seconds since the last call (or construction) to a total.
-class PhaseClock {
- public:
-  void charge(double& total) {
-    const auto now = std::chrono::steady_clock::now();
-    total += std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
-
-}  // namespace
-
 SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& settings,
                          FlowState& state, const DragUpdate& drag,
                          const QuantityOfInterest& qoi, const IterationCallback& on_iteration,

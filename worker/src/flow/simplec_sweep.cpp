@@ -7,6 +7,7 @@
 #include "flow/mass_flux.h"
 #include "flow/pressure_correction.h"
 #include "flow/residuals.h"
+#include "flow/phase_clock.h"
 
 namespace gridfree {
 namespace {
@@ -18,19 +19,6 @@ Grid largest_face_grid(const Grid& g) {
     if (FaceLayout(g, a).size() > FaceLayout(g, best).size()) best = a;
   return FaceLayout(g, best).as_grid(g);
 }
-
-// Adds the seconds since the last call (or construction) to a total.
-class PhaseClock {
- public:
-  void charge(double* total) {
-    const auto now = std::chrono::steady_clock::now();
-    if (total) *total += std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 // Exactly `iterations` inner iterations (no tolerance test).
 LinearSolverSettings replayed(int iterations) { return {0.0, iterations}; }
@@ -67,7 +55,7 @@ SweepReport simplec_sweep(const FlowProblem& problem, const SimpleSettings& sett
       if (!st.converged && !replay) report.linear_failures = true;
     }
   }  // ∇·u is freed here
-  if (seconds) clock.charge(&seconds->momentum);
+  if (seconds) clock.charge(seconds->momentum);
 
   // Pressure correction: p ← p + α_p p', u ← u* + d ∇p'. Its multigrid
   // hierarchy is rebuilt for new coefficients every sweep anyway, so it
@@ -87,7 +75,7 @@ SweepReport simplec_sweep(const FlowProblem& problem, const SimpleSettings& sett
   report.pressure_iterations = pc.solve.iterations;
   report.counts.pressure = pc.solve.iterations;
   if (!pc.solve.converged && !replay) report.linear_failures = true;
-  if (seconds) clock.charge(&seconds->pressure);
+  if (seconds) clock.charge(seconds->pressure);
 
   report.continuity = normalized(pc.imbalance, continuity_scale);
   report.momentum = normalized(momentum_residual, momentum_scale);

@@ -4,9 +4,9 @@
 // generator parameters that fit the domain, physical plausibility
 // (job/case_plausibility.h).
 #include <cmath>
-#include <sstream>
 
 #include "core/json_fields.h"
+#include "core/text.h"
 #include "job/case_parts.h"
 #include "job/case_plausibility.h"
 #include "job/job_spec.h"
@@ -14,12 +14,6 @@
 
 namespace gridfree {
 namespace {
-
-std::string number_text(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
 
 BoundarySpec parse_y_boundary(const nlohmann::json& obj, const std::string& key, const std::string& where,
                               ProblemList& problems) {

@@ -2,18 +2,12 @@
 #include "job/case_plausibility.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "core/json_fields.h"
+#include "core/text.h"
 
 namespace gridfree {
 namespace {
-
-std::string number_text(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
 
 void check_range(double x, PlausibleRange r, const std::string& where, const char* what, ProblemList& problems) {
   if (!(x > 0)) return;  // sign errors are reported by the schema and parse_case

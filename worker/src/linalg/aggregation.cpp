@@ -3,12 +3,11 @@
 #include <algorithm>
 
 #include "linalg/stencil_ops.h"
+#include "linalg/parallel_threshold.h"
 
 namespace gridfree {
 
 namespace {
-
-constexpr std::size_t kParallelCells = 20000;
 
 // Per-axis coupling strength: Σ over cells of (a_low + a_high) / 2.
 std::array<double, 3> axis_strength(const Stencil7& s) {

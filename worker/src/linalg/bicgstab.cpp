@@ -5,12 +5,11 @@
 
 #include "linalg/stencil_ops.h"
 #include "linalg/vector_ops.h"
+#include "linalg/parallel_threshold.h"
 
 namespace gridfree {
 
 namespace {
-
-constexpr std::size_t kParallelSize = 20000;
 
 // Relative size below which an inner product counts as a breakdown.
 constexpr double kBreakdown = 1e-12;
@@ -20,7 +19,7 @@ void subtract_scaled(const std::vector<double>& a, double alpha, const std::vect
                      std::vector<double>& y) {
   const std::size_t n = a.size();
   y.resize(n);
-#pragma omp parallel for schedule(static) if (n > kParallelSize)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t i = 0; i < n; ++i) y[i] = a[i] - alpha * b[i];
 }
 
@@ -28,7 +27,7 @@ void subtract_scaled(const std::vector<double>& a, double alpha, const std::vect
 void update_direction(const std::vector<double>& r, double beta, double omega,
                       const std::vector<double>& v, std::vector<double>& p) {
   const std::size_t n = r.size();
-#pragma omp parallel for schedule(static) if (n > kParallelSize)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t i = 0; i < n; ++i) p[i] = r[i] + beta * (p[i] - omega * v[i]);
 }
 
@@ -36,7 +35,7 @@ void update_direction(const std::vector<double>& r, double beta, double omega,
 void add_two(double alpha, const std::vector<double>& a, double omega,
              const std::vector<double>& b, std::vector<double>& x) {
   const std::size_t n = x.size();
-#pragma omp parallel for schedule(static) if (n > kParallelSize)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t i = 0; i < n; ++i) x[i] += alpha * a[i] + omega * b[i];
 }
 

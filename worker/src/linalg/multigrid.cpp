@@ -2,6 +2,7 @@
 
 #include "linalg/smoother.h"
 #include "linalg/stencil_ops.h"
+#include "linalg/parallel_threshold.h"
 
 namespace gridfree {
 
@@ -48,7 +49,7 @@ void MultigridPreconditioner::cycle(std::size_t l, const std::vector<double>& rh
     gauss_seidel_sweep(a, rhs, x, SweepOrder::kForward, level.scratch);
   stencil_apply(a, x, level.residual);
   const std::size_t n = rhs.size();
-#pragma omp parallel for schedule(static) if (n > 20000)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t c = 0; c < n; ++c) level.residual[c] = rhs[c] - level.residual[c];
   restrict_sum(a.grid, level.to_coarse, level.residual, next.rhs);
   cycle(l + 1, next.rhs, next.x);

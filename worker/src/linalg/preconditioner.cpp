@@ -1,6 +1,7 @@
 #include "linalg/preconditioner.h"
 
 #include "linalg/smoother.h"
+#include "linalg/parallel_threshold.h"
 
 namespace gridfree {
 
@@ -13,7 +14,7 @@ void JacobiPreconditioner::setup(const Stencil7& s) {
 void JacobiPreconditioner::apply(const std::vector<double>& r, std::vector<double>& z) {
   const std::size_t n = r.size();
   z.resize(n);
-#pragma omp parallel for schedule(static) if (n > 20000)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t c = 0; c < n; ++c) z[c] = inverse_diagonal_[c] * r[c];
 }
 

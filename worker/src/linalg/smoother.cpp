@@ -1,12 +1,11 @@
 #include "linalg/smoother.h"
 
 #include "linalg/stencil_ops.h"
+#include "linalg/parallel_threshold.h"
 
 namespace gridfree {
 
 namespace {
-
-constexpr std::size_t kParallelCells = 20000;
 
 bool has_odd_periodic_axis(const Grid& g) {
   for (int a = 0; a < 3; ++a)

@@ -24,6 +24,12 @@ struct Stencil7 {
   std::vector<double> ap, aw, ae, as, an, ab, at, b;
 };
 
+// Pointers to the neighbour coefficient arrays by axis and side:
+// nb[axis][0] the low neighbour (W, S, B), nb[axis][1] the high one (E, N, T).
+inline std::array<std::array<std::vector<double>*, 2>, 3> neighbour_arrays(Stencil7& s) {
+  return {{{&s.aw, &s.ae}, {&s.as, &s.an}, {&s.ab, &s.at}}};
+}
+
 // Puts `s` on grid `g`: every array resized to g.cells() (contents
 // unspecified; storage reused when it fits). One system can so serve
 // several grids in turn, e.g. the three staggered momentum components.

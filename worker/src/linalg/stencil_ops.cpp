@@ -1,4 +1,5 @@
 #include "linalg/stencil_ops.h"
+#include "linalg/parallel_threshold.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +7,6 @@
 #include <string>
 
 namespace gridfree {
-
-namespace {
-
-// Rows below this many cells run on one thread (thread start-up costs more).
-constexpr std::size_t kParallelCells = 20000;
-
-}  // namespace
 
 RowNeighbours row_neighbours(const Grid& g, int j, int k) {
   const int ny = g.n[1], nz = g.n[2];

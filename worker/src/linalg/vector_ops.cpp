@@ -1,12 +1,11 @@
 #include "linalg/vector_ops.h"
+#include "linalg/parallel_threshold.h"
 
 #include <cmath>
 
 namespace gridfree {
 
 namespace {
-
-constexpr std::size_t kParallelSize = 20000;
 
 // Fixed-order reduction: f(begin, end) sums one block; blocks are combined
 // in order, so the thread count never changes the result.
@@ -16,7 +15,7 @@ double reduce_blocks(std::size_t n, BlockSum f) {
   if (blocks <= 1) return n ? f(std::size_t(0), n) : 0.0;
   std::vector<double> partial(blocks);
   const long long nb = static_cast<long long>(blocks);
-#pragma omp parallel for schedule(static) if (n > kParallelSize)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (long long b = 0; b < nb; ++b) {
     const std::size_t begin = std::size_t(b) * kReductionBlock;
     const std::size_t end = begin + kReductionBlock < n ? begin + kReductionBlock : n;
@@ -54,19 +53,19 @@ void remove_mean(std::vector<double>& a) {
   if (a.empty()) return;
   const double mean = sum(a) / static_cast<double>(a.size());
   const std::size_t n = a.size();
-#pragma omp parallel for schedule(static) if (n > kParallelSize)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t i = 0; i < n; ++i) a[i] -= mean;
 }
 
 void axpy(double alpha, const std::vector<double>& x, std::vector<double>& y) {
   const std::size_t n = y.size();
-#pragma omp parallel for schedule(static) if (n > kParallelSize)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t i = 0; i < n; ++i) y[i] += alpha * x[i];
 }
 
 void xpby(const std::vector<double>& x, double beta, std::vector<double>& y) {
   const std::size_t n = y.size();
-#pragma omp parallel for schedule(static) if (n > kParallelSize)
+#pragma omp parallel for schedule(static) if (n > kParallelCells)
   for (std::size_t i = 0; i < n; ++i) y[i] = x[i] + beta * y[i];
 }
 

@@ -7,6 +7,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "core/text.h"
 #include "particles/particle_io.h"
 #include "particles/text_fields.h"
 
@@ -14,12 +15,6 @@ namespace gridfree {
 namespace {
 
 constexpr std::array<const char*, 7> kColumns{"x", "y", "z", "d", "u", "v", "w"};
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 }  // namespace
 
@@ -56,7 +51,7 @@ ParticleSet read_csv(const std::filesystem::path& path) {
       if (!text::parse_double(fields[0])) {  // a header
         width = fields.size();
         for (std::size_t i = 0; i < fields.size(); ++i) {
-          const std::string name = lower(fields[i]);
+          const std::string name = ascii_lower(fields[i]);
           bool known = false;
           for (std::size_t c = 0; c < kColumns.size(); ++c) {
             if (name != kColumns[c]) continue;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/text.h"
 #include "particles/particle_io.h"
 #include "particles/text_fields.h"
 
@@ -11,12 +12,6 @@ namespace gridfree {
 namespace {
 
 constexpr int kV2DataLine = 35;  // "Data starts at line 35" (MFiX's own header text)
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // One particle from fields x y z radius density [u v w].
 ParticleSet read_v1(const std::filesystem::path& path, const std::vector<std::string>& lines) {
@@ -74,7 +69,7 @@ ParticleSet read_v2(const std::filesystem::path& path, const std::vector<std::st
     const std::string_view line = text::trim(lines[static_cast<std::size_t>(n)]);
     const auto colon = line.find(':');
     if (colon == std::string_view::npos) continue;
-    const std::string key = lower(text::trim(line.substr(0, colon)));
+    const std::string key = ascii_lower(text::trim(line.substr(0, colon)));
     const auto values = text::split(line.substr(colon + 1), " \t", true);
     if (key == "dimension" && !values.empty()) {
       dimension = static_cast<int>(text::parse_double(values[0]).value_or(0));

@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kFwhm = 0.2;
 constexpr int kSteps = 4;
-const double kK = 2.0 * std::numbers::pi;
+const double kModeK = 2.0 * std::numbers::pi;
 
 double mode_factor(double kappa) {
   const double nu0 = kFwhm * kFwhm / (16.0 * std::log(2.0));
@@ -38,7 +38,7 @@ GridOutcome filter_outcome(int n) {
   std::vector<double> alpha(g.cells());
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      alpha[g.index(i, j, 0)] = 1.0 + 0.5 * std::sin(kK * g.centre(0, i)) + std::cos(2 * kK * g.centre(1, j)) / 3.0;
+      alpha[g.index(i, j, 0)] = 1.0 + 0.5 * std::sin(kModeK * g.centre(0, i)) + std::cos(2 * kModeK * g.centre(1, j)) / 3.0;
   FilterSettings settings;
   settings.fwhm_cm = kFwhm;
   settings.steps = kSteps;
@@ -51,8 +51,8 @@ GridOutcome filter_outcome(int n) {
   }
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      const double exact = 1.0 + 0.5 * std::sin(kK * g.centre(0, i)) * mode_factor(kK) +
-                           std::cos(2 * kK * g.centre(1, j)) / 3.0 * mode_factor(2 * kK);
+      const double exact = 1.0 + 0.5 * std::sin(kModeK * g.centre(0, i)) * mode_factor(kModeK) +
+                           std::cos(2 * kModeK * g.centre(1, j)) / 3.0 * mode_factor(2 * kModeK);
       o.error = std::max(o.error, std::abs(alpha[g.index(i, j, 0)] - exact));
     }
   return o;

@@ -15,15 +15,15 @@ namespace {
 constexpr double kRho = 1.0;
 constexpr double kMu = 0.01;
 constexpr double kStep = 1e-3;  // finite-difference step of analytic.h
-const double kK = 2.0 * std::numbers::pi;
+const double kWaveK = 2.0 * std::numbers::pi;
 
 // The manufactured fields (header comment); z plays no part.
-double eps_exact(const Point3& x) { return 0.6 + 0.15 * std::sin(kK * x[0]) * std::sin(kK * x[1]); }
-double p_exact(const Point3& x) { return 0.5 * std::cos(kK * x[0]) * std::sin(kK * x[1]); }
-double beta_exact(const Point3& x) { return 2.0 * (1.0 + 0.5 * std::cos(kK * x[0]) * std::cos(kK * x[1])); }
+double eps_exact(const Point3& x) { return 0.6 + 0.15 * std::sin(kWaveK * x[0]) * std::sin(kWaveK * x[1]); }
+double p_exact(const Point3& x) { return 0.5 * std::cos(kWaveK * x[0]) * std::sin(kWaveK * x[1]); }
+double beta_exact(const Point3& x) { return 2.0 * (1.0 + 0.5 * std::cos(kWaveK * x[0]) * std::cos(kWaveK * x[1])); }
 double u_exact(int a, const Point3& x) {
-  if (a == 0) return 1.0 + 0.5 * std::sin(kK * x[0]) * std::cos(kK * x[1]);
-  if (a == 1) return 0.8 + 0.4 * std::cos(kK * x[0]) * std::sin(2.0 * kK * x[1]);
+  if (a == 0) return 1.0 + 0.5 * std::sin(kWaveK * x[0]) * std::cos(kWaveK * x[1]);
+  if (a == 1) return 0.8 + 0.4 * std::cos(kWaveK * x[0]) * std::sin(2.0 * kWaveK * x[1]);
   return 0.0;
 }
 
