@@ -10,7 +10,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS = fuzz_json_text fuzz_job fuzz_study fuzz_series fuzz_particle_files fuzz_result
 
-.PHONY: all deps test-deps configure build test test-unit test-sanitize fuzz demo bench bench-quick clean
+.PHONY: all deps test-deps configure configure-app build build-app test test-unit test-sanitize fuzz demo bench bench-quick clean
 
 all: build
 
@@ -20,13 +20,23 @@ deps:
 test-deps:
 	@scripts/install-deps.sh test
 
-configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DGRIDFREE_WERROR=$(WERROR) >/dev/null
+configure: test-deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DGRIDFREE_WERROR=$(WERROR) \
+	  -DGRIDFREE_BUILD_TESTS=ON -DGRIDFREE_BUILD_BENCH=ON >/dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-test: test-deps build
+# Only what the demo runs: the two executables, without the test suite, the
+# benchmarks or the test-only packages (docs/BENCHMARKS.md "Build and CI time").
+configure-app: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DGRIDFREE_WERROR=$(WERROR) \
+	  -DGRIDFREE_BUILD_TESTS=OFF -DGRIDFREE_BUILD_BENCH=OFF >/dev/null
+
+build-app: configure-app
+	@cmake --build $(BUILD) -j $(JOBS) --target gridfree gridfree-worker
+
+test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
 test-unit: build
@@ -59,7 +69,7 @@ fuzz:
 	  [ $$rc -eq 0 ] || { echo "$$t failed (exit $$rc): see $(FUZZ_BUILD)/$$name.log"; exit 1; }; \
 	done
 
-demo: build
+demo: build-app
 	@$(BUILD)/bin/gridfree run studies/quickstart.json --db gridfree.sqlite; status=$$?; \
 	  echo "Report: $(CURDIR)/reports/quickstart/report.html (and report.md)"; \
 	  echo "Database: $(CURDIR)/gridfree.sqlite"; exit $$status

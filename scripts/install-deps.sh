@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages gridfree needs to build, test and report:
-#   scripts/install-deps.sh        build and run
-#   scripts/install-deps.sh test   also what the tests use
+#   scripts/install-deps.sh        build and run (what `make demo` needs)
+#   scripts/install-deps.sh test   also what the tests use (`make test`)
 #   scripts/install-deps.sh fuzz   also clang for the fuzz targets
 # Idempotent: only missing packages are installed (needs root for that).
 set -euo pipefail
@@ -9,16 +9,16 @@ set -euo pipefail
 packages=(
   g++ make cmake git pkg-config
   libeigen3-dev nlohmann-json3-dev libsqlite3-dev sqlite3 libspdlog-dev
-  libcli11-dev libgtest-dev libfftw3-dev
+  libcli11-dev libfftw3-dev
   librsvg2-bin
 )
 # librsvg2-bin: rsvg-convert writes the PDF/PNG copies of the report's charts.
-# `install-deps.sh test` adds what only the tests need: headless Chromium
+# `install-deps.sh test` adds what only the tests need: GoogleTest, headless Chromium
 # renders and prints the HTML report, pdftotext (poppler-utils) reads the
 # PDF; a single-node Slurm (munge, slurmctld, slurmd, started by
 # tests/integration/slurm/slurm_cluster.sh) runs the Slurm executor tests.
 if [[ "${1:-}" == "test" ]]; then
-  packages+=(chromium poppler-utils munge slurmctld slurmd slurm-client)
+  packages+=(libgtest-dev chromium poppler-utils munge slurmctld slurmd slurm-client)
 fi
 # `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
 if [[ "${1:-}" == "fuzz" ]]; then
