@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "output_path.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "job/job_spec.h"
@@ -43,7 +44,8 @@ void write_atomically(const std::filesystem::path& target, const ParticleSet& se
 }
 
 int run_particles(const ParticlesOptions& o) {
-  // 1. Read and validate the spec.
+  // 1. Check where the output goes, then read and validate the spec.
+  check_output_path("-o", o.output);
   const std::filesystem::path spec_file(o.spec);
   const nlohmann::json doc = read_json_file(spec_file);
   const CaseSpec c = parse_particles_spec(doc, spec_file.has_parent_path() ? spec_file.parent_path() : ".");

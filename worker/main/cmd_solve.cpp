@@ -34,6 +34,7 @@
 #include "job/job_spec.h"
 #include "job/memory_estimate.h"
 #include "job/result.h"
+#include "output_path.h"
 #include "stop_request.h"
 #include "thread_count.h"
 
@@ -123,7 +124,9 @@ int run_solve(const SolveCommandOptions& o) {
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
 
-  // 1. Parse (throws InputError → exit 2, nothing written).
+  // 1. Parse (throws InputError → exit 2, nothing written); a result that
+  // could not be written is refused before solving.
+  check_output_path("-o", o.output);
   const std::filesystem::path job_path(o.job_file);
   const nlohmann::json doc = read_json_file(job_path);
   const JobSpec job = parse_job(doc, job_path.has_parent_path() ? job_path.parent_path() : ".");

@@ -115,6 +115,19 @@ TEST_F(ParticlesCli, ErrorsLeaveAnExistingOutputUntouched) {
   EXPECT_EQ(slurp(dir_ / "out.csv"), "previous\n");
 }
 
+TEST_F(ParticlesCli, UnwritableOutputExits2NamingThePath) {
+  const auto spec = write("spec.json", R"({"domain_dp": [30, 200, 10], "particle_diameter_cm": 0.01,
+                                           "generator": {"kind": "bursting_bubble", "seed": 1}})");
+  const fs::path missing = dir_ / "no_such_folder" / "out.csv";
+  const CommandRun a = particles(spec, missing);
+  EXPECT_EQ(a.exit_code, 2) << a.err;
+  EXPECT_NE(a.err.find(missing.string()), std::string::npos) << a.err;
+  EXPECT_NE(a.err.find("does not exist"), std::string::npos) << a.err;
+  const CommandRun b = particles(spec, dir_);
+  EXPECT_EQ(b.exit_code, 2) << b.err;
+  EXPECT_NE(b.err.find("is an existing folder"), std::string::npos) << b.err;
+}
+
 TEST_F(ParticlesCli, MalformedJsonNamesLineAndColumn) {
   const auto spec = write("broken.json", "{\"domain_dp\": [30, 200, 10],\n \"particle_diameter_cm\": ,\n}");
   const CommandRun r = particles(spec, dir_ / "out.csv");

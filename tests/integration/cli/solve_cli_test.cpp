@@ -182,4 +182,21 @@ TEST(SolveCli, UnknownStartIsInvalidInput) {
   EXPECT_NE(r.output.find("--start"), std::string::npos) << r.output;
 }
 
+// -o into a missing folder or onto a folder: exit 2 naming the path and the
+// reason, refused before solving (no "solving" line, nothing written).
+TEST(SolveCli, UnwritableOutputIsInvalidInputBeforeSolving) {
+  const fs::path dir = scratch("bad_output");
+  save_json(dir / "job.json", baseline_job("diffusion", {15, 100, 5}));
+  const std::string missing = (dir / "no_such_folder" / "result.json").string();
+  const Outcome a = worker_solve((dir / "job.json").string() + " -o " + missing, dir);
+  EXPECT_EQ(a.exit_code, 2) << a.output;
+  EXPECT_NE(a.output.find(missing), std::string::npos) << a.output;
+  EXPECT_NE(a.output.find("does not exist"), std::string::npos) << a.output;
+  EXPECT_EQ(a.output.find("solving"), std::string::npos) << a.output;
+  const Outcome b = worker_solve((dir / "job.json").string() + " -o " + dir.string(), dir);
+  EXPECT_EQ(b.exit_code, 2) << b.output;
+  EXPECT_NE(b.output.find("is an existing folder"), std::string::npos) << b.output;
+  EXPECT_EQ(b.output.find("solving"), std::string::npos) << b.output;
+}
+
 }  // namespace
