@@ -9,7 +9,9 @@
 namespace gridfree::cli {
 
 void add_executor_flags(CLI::App* sub, ExecutorFlags& f) {
-  sub->add_option("--executor", f.kind, "local | slurm")->capture_default_str();
+  sub->add_option("--executor", f.kind, "where jobs run: local (this machine) or slurm (sbatch)")
+      ->check(CLI::IsMember({"local", "slurm"}))
+      ->capture_default_str();
   sub->add_option("--slurm-profile", f.profile, "Slurm settings (JSON file); the flags below override it");
   sub->add_option("--partition", f.slurm.partition, "Slurm partition");
   sub->add_option("--account", f.slurm.account, "Slurm account");

@@ -1,12 +1,16 @@
 // gridfree-worker: solves one frozen-bed case on one grid (docs/INTERFACE.md §2).
 // main parses, runs one subcommand, and maps the outcome to an exit code.
+#include <algorithm>
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "commands.h"
+#include "core/command_suggestion.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "core/version.h"
@@ -19,13 +23,27 @@ int main(int argc, char** argv) {
   spdlog::set_pattern("%^[%l]%$ %v");
 
   CLI::App app{"gridfree-worker: steady gas flow through one frozen particle bed on one grid"};
-  app.set_version_flag("--version", version_string());
+  const std::string version = program_version_string("gridfree-worker");
+  app.set_version_flag("--version,-V", version);
   app.require_subcommand(1);
   int exit_code = to_int(ExitCode::kOk);
   worker_cli::add_solve_command(app, exit_code);
   worker_cli::add_particles_command(app, exit_code);
   worker_cli::add_verify_command(app, exit_code);
   worker_cli::add_align_command(app, exit_code);
+  app.add_subcommand("version", "print the version (as --version)")->callback([&version] {
+    std::cout << version << '\n';
+  });
+  // A mistyped command: name it and the nearest known one (exit 2).
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+      names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::cerr << "error: " << unknown_command_message(argv[1], names) << "\nRun with --help for more information.\n";
+      return to_int(ExitCode::kInvalidInput);
+    }
+  }
 
   try {
     app.parse(argc, argv);

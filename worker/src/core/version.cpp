@@ -2,8 +2,10 @@
 
 namespace gridfree {
 
-std::string version_string() {
-  return std::string("gridfree ") + project_version() + " (" + source_revision() + ")";
+std::string version_string() { return program_version_string("gridfree"); }
+
+std::string program_version_string(const std::string& program) {
+  return program + " " + project_version() + " (" + source_revision() + ")";
 }
 
 }  // namespace gridfree

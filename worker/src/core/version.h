@@ -11,6 +11,9 @@ const char* source_revision();   // short git sha, or "unknown"
 // "gridfree 0.1.0 (abcdef1234)": what --version prints and results record.
 std::string version_string();
 
+// "<program> 0.1.0 (abcdef1234)": what `program --version` prints.
+std::string program_version_string(const std::string& program);
+
 // The part of the version that changes results: part of every job_hash.
 // Bump kSolverVersion whenever a change alters what the worker computes.
 inline constexpr const char* kSolverVersion = "gridfree-solver/5";
