@@ -2,7 +2,8 @@
 //   --replace (run, submit): a changed study under a stored name replaces it
 //   run     = validate + submit + schedule that study until done + report
 //   submit  = validate + submit (a daemon or a later run does the work)
-//   daemon  = schedule every queued study until SIGINT/SIGTERM
+//   daemon  = schedule every queued study until SIGINT/SIGTERM (an existing
+//             database only; log lines carry their time)
 // Validation comes first: an invalid study never opens (or creates) the database.
 #include <unistd.h>
 
@@ -157,10 +158,14 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
   add_executor_flags(sub, *executor_flags);
   sub->add_option("--timeout", *timeout, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->callback([=, &exit_code] {
+    // A daemon runs for days: every log line carries its time.
+    spdlog::set_pattern("[%Y-%m-%d %H:%M:%S] %^[%l]%$ %v");
+    // A mistyped --db would wait forever on an empty new database.
+    const auto store_ptr = open_existing_store(*db);
+    Store& store = *store_ptr;
     auto options = scheduler_options(*db, *jobs, *timeout, {});
     apply_memory_budget(options, *executor_flags, *memory_budget);
     auto executor = make_executor(*executor_flags, *db, *jobs, options);
-    Store store(*db, true);
     const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
     recover_stale_jobs(store);
     StopSignals signals;
@@ -170,7 +175,11 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
     options.progress = &progress;
     spdlog::info("daemon: working {} with {} job(s) at a time (SIGINT/SIGTERM stops)", *db, *jobs);
     const SchedulerSummary sum = run_scheduler(store, *executor, options, adopted);
-    spdlog::info("daemon: stopped; {} job(s) finished this session, in-flight jobs requeued", sum.finished);
+    if (sum.requeued > 0)
+      spdlog::info("daemon: stopped; {} job(s) finished this session, {} in-flight job(s) requeued", sum.finished,
+                   sum.requeued);
+    else
+      spdlog::info("daemon: stopped; {} job(s) finished this session", sum.finished);
     if (sum.reports_failed > 0) spdlog::error("daemon: {} report(s) could not be written", sum.reports_failed);
     exit_code = to_int(sum.reports_failed > 0 ? ExitCode::kInternalError : ExitCode::kOk);
   });

@@ -247,7 +247,10 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
 
   if (o.stop_requested()) {
     sum.interrupted = true;
-    for (long long id : executor.kill_all()) store.release(id, o.owner, "interrupted: requeued for the next run");
+    for (long long id : executor.kill_all()) {
+      store.release(id, o.owner, "interrupted: requeued for the next run");
+      ++sum.requeued;
+    }
     running.clear();
   }
   if (o.progress) o.progress->finish();

@@ -51,6 +51,7 @@ struct SchedulerSummary {
   int series_finished = 0;
   bool interrupted = false;
   int reports_failed = 0;  // report writes that failed (logged)
+  int requeued = 0;        // running jobs stopped and requeued on a stop request
 };
 
 // Startup recovery: requeues running jobs whose owner process is gone and

@@ -12,7 +12,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -210,6 +212,21 @@ TEST(OrchestratorCli, DaemonStopsOnSigtermAndARestartFinishesTheQueue) {
   EXPECT_EQ(WEXITSTATUS(status), 0);
   EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM jobs WHERE status = 'running'"), "0");  // released
   EXPECT_LT(results_count(db), 12);
+  // Every log line starts with its time; a requeue is named with its count.
+  const std::regex stamped(R"(^\[\d{4}-\d\d-\d\d \d\d:\d\d:\d\d\] )");
+  auto check_log = [&](bool may_requeue) {
+    std::ifstream log(dir / "spawned.log");
+    int lines = 0;
+    for (std::string line; std::getline(log, line); ++lines) {
+      EXPECT_TRUE(std::regex_search(line, stamped)) << line;
+      if (line.find("requeued") != std::string::npos) {
+        EXPECT_TRUE(may_requeue) << line;
+        EXPECT_TRUE(std::regex_search(line, std::regex(R"(, [1-9]\d* in-flight job\(s\) requeued)"))) << line;
+      }
+    }
+    EXPECT_GT(lines, 0);
+  };
+  check_log(true);
   pid = spawn_gridfree_in(dir, "daemon -j 2 --db g.sqlite", "0.05");
   ASSERT_TRUE(wait_until([&] { return sqlite_query(db, "SELECT status FROM studies") == "done"; }, 60));
   kill(pid, SIGINT);
@@ -217,6 +234,16 @@ TEST(OrchestratorCli, DaemonStopsOnSigtermAndARestartFinishesTheQueue) {
   EXPECT_EQ(WEXITSTATUS(status), 0);
   EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*), COUNT(DISTINCT job_id) FROM results"), "12|12");
   EXPECT_EQ(sqlite_query(db, "PRAGMA integrity_check"), "ok");
+  check_log(false);  // idle when stopped: nothing requeued, nothing said about it
+}
+
+TEST(OrchestratorCli, DaemonRefusesAMissingDatabase) {
+  const auto dir = temp_dir("daemon_typo");
+  const auto out = gridfree_merged(dir, "daemon --db typo.sqlite");
+  EXPECT_EQ(out.code, 2) << out.text;
+  EXPECT_NE(out.text.find("typo.sqlite"), std::string::npos) << out.text;
+  EXPECT_NE(out.text.find("submit or run a study first"), std::string::npos) << out.text;
+  EXPECT_FALSE(fs::exists(dir / "typo.sqlite"));
 }
 
 }  // namespace
