@@ -62,6 +62,8 @@ SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy&
   if (r.created)
     spdlog::info("submitted '{}': {} series, {} jobs ({} new, {} already done)", study.name, ex.series.size(),
                  r.jobs_total, r.jobs_new, r.jobs_reused);
+  else if (r.uncancelled)
+    spdlog::info("'{}' was cancelled: {} cancelled job(s) queued again, resuming", study.name, r.jobs_requeued);
   else
     spdlog::info("'{}' is already in the database: resuming", study.name);
   return r;
@@ -139,8 +141,12 @@ void add_submit_command(CLI::App& app, int& exit_code) {
     const ExpandedStudy ex = expand(study);
     Store store(*db, true);
     const SubmitResult r = submit_study(store, study, ex, *replace);
-    std::cout << (r.created ? "submitted " : "already submitted ") << study.name << ": " << ex.series.size()
-              << " series, " << r.jobs_total << " jobs\n";
+    if (r.uncancelled)
+      std::cout << "requeued cancelled study " << study.name << ": " << r.jobs_requeued
+                << " cancelled job(s) queued again (" << r.jobs_total << " jobs in all)\n";
+    else
+      std::cout << (r.created ? "submitted " : "already submitted (nothing changed) ") << study.name << ": "
+                << ex.series.size() << " series, " << r.jobs_total << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
 }

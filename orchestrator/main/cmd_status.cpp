@@ -92,10 +92,22 @@ void add_cancel_command(CLI::App& app, int& exit_code) {
   sub->add_option("--db", *db, "SQLite database")->capture_default_str();
   sub->callback([=, &exit_code] {
     auto store = open_existing_store(*db);
-    require_study(*store, *name);
-    store->cancel(*name);
-    std::cout << "cancelled " << *name << " (running jobs finish; submit again to resume)\n";
+    const long long id = require_study(*store, *name);
+    const StudyStatus before = store->statuses(id).front();
     exit_code = to_int(ExitCode::kOk);
+    if (before.status == "cancelled") {
+      std::cout << "study " << *name << " is already cancelled; nothing changed (submit again to resume)\n";
+      return;
+    }
+    if (before.status != "queued" && before.status != "running") {
+      std::cout << "study " << *name << " is already finished (" << before.status << "); nothing changed\n";
+      return;
+    }
+    store->cancel(*name);
+    const StudyStatus after = store->statuses(id).front();
+    std::cout << "cancelled " << *name << ": " << (before.queued - after.queued) << " queued job(s) cancelled";
+    if (after.running > 0) std::cout << ", " << after.running << " running job(s) finish";
+    std::cout << " (submit again to resume)\n";
   });
 }
 

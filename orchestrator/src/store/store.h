@@ -30,6 +30,8 @@ struct SubmitResult {
   std::size_t jobs_new = 0;      // inserted by this submit
   std::size_t jobs_reused = 0;   // already done in the store (any study)
   bool replaced = false;         // a different stored definition was replaced (--replace)
+  bool uncancelled = false;      // the stored study was cancelled and is queued again
+  std::size_t jobs_requeued = 0; // its cancelled jobs queued again
   std::vector<std::string> jobs_removed;  // hashes of jobs no study needs any more
 };
 

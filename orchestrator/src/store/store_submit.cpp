@@ -59,6 +59,8 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
             "UPDATE jobs SET status = 'queued', error = NULL WHERE status = 'cancelled' AND id IN "
             "(SELECT job_id FROM study_jobs WHERE study_id = ?)");
         up.bind_all(out.study_id).run();
+        out.uncancelled = true;
+        out.jobs_requeued = static_cast<std::size_t>(db_.changes());
         db_.prepare("UPDATE series SET status = 'queued' WHERE study_id = ? AND status = 'cancelled'")
             .bind_all(out.study_id).run();
         db_.prepare("UPDATE studies SET status = 'queued', finished_at = NULL WHERE id = ?")

@@ -86,6 +86,33 @@ TEST(StudyLifecycle, DeleteKeepsJobsOtherStudiesUse) {
   EXPECT_EQ(gridfree_in(dir, "delete a --db g.sqlite").exit_code, 2);  // gone
 }
 
+TEST(StudyLifecycle, CancelAndResubmitSayWhatTheyDo) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "cancel");
+  write_one_series_study(dir, "done.json", "finished", "ok", {5.0, 4.0, 3.3, 2.5});
+  ASSERT_EQ(gridfree_in(dir, "run done.json -j 2 --db g.sqlite").exit_code, 0);
+  const CommandRun late = gridfree_in(dir, "cancel finished --db g.sqlite");
+  EXPECT_EQ(late.exit_code, 0) << late.err;
+  EXPECT_NE(late.out.find("study finished is already finished (done); nothing changed"), std::string::npos)
+      << late.out;
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT status FROM studies WHERE name = 'finished'"), "done");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM events WHERE kind = 'cancel'"), "0");
+
+  write_one_series_study(dir, "q.json", "queued", "ok", {4.8, 4.2, 3.0, 2.2});  // none shared
+  ASSERT_EQ(gridfree_in(dir, "submit q.json --db g.sqlite").exit_code, 0);
+  const CommandRun cancel = gridfree_in(dir, "cancel queued --db g.sqlite");
+  EXPECT_EQ(cancel.exit_code, 0) << cancel.err;
+  EXPECT_NE(cancel.out.find("cancelled queued: 4 queued job(s) cancelled"), std::string::npos) << cancel.out;
+  const CommandRun again = gridfree_in(dir, "cancel queued --db g.sqlite");
+  EXPECT_NE(again.out.find("already cancelled; nothing changed"), std::string::npos) << again.out;
+  const CommandRun resubmit = gridfree_in(dir, "submit q.json --db g.sqlite");
+  EXPECT_EQ(resubmit.exit_code, 0) << resubmit.err;
+  EXPECT_NE(resubmit.out.find("requeued cancelled study queued: 4 cancelled job(s) queued again"), std::string::npos)
+      << resubmit.out;
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT status FROM studies WHERE name = 'queued'"), "queued");
+  const CommandRun same = gridfree_in(dir, "submit q.json --db g.sqlite");
+  EXPECT_NE(same.out.find("already submitted (nothing changed) queued"), std::string::npos) << same.out;
+}
+
 TEST(StudyLifecycle, StudyTimeoutKillsAHangingJob) {
   const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "timeout");
   write_one_series_study(dir, "t.json", "t", "hang", {5.0}, {{"timeout_s", 0.5}});
