@@ -65,6 +65,12 @@ struct AlignmentOption {
   std::array<std::vector<int>, 3> offsets;   // nx, ny, nz offsets ({0} when not given)
 };
 
+// Longest study name: it names the report folder and the database row, and
+// file systems stop at 255 bytes per folder name (docs/LIMITS.md).
+inline constexpr std::size_t kMaxStudyNameLength = 100;
+// Longest description: free text kept with the definition (docs/LIMITS.md).
+inline constexpr std::size_t kMaxStudyDescriptionLength = 10000;
+
 struct Study {
   std::string name;
   nlohmann::json definition;        // the study document as read

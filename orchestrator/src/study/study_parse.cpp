@@ -349,12 +349,38 @@ void check_grids(const Study& s, ProblemList& problems) {
                      c.name + " (docs/LIMITS.md)");
         continue;
       }
+      if (grids[i][1] < kMinFlowCells) {
+        problems.add_once(list + std::to_string(i),
+                          "gives " + std::to_string(grids[i][1]) + " cell along y, the flow direction, for case " +
+                              c.name + "; at least " + std::to_string(kMinFlowCells) +
+                              " are needed (docs/LIMITS.md)");
+        continue;
+      }
       const double mem = estimated_memory_bytes(grids[i]);
       if (machine > 0 && mem > machine && !s.adaptive_grids)  // adaptive: a cap, not an error
         problems.add_once(list + std::to_string(i),
                  "estimated memory " + human_bytes(mem) + " exceeds this machine's " + human_bytes(machine));
     }
   }
+}
+
+// Filter widths wider than a case's whole domain (the worker refuses the
+// job too; here the pointer names the study's level).
+void check_filter_widths(const json& doc, const Study& s, ProblemList& problems) {
+  const auto f = doc.find("factors");
+  if (f == doc.end() || !f->is_object() || !f->contains("fwhm_dp")) return;
+  for (std::size_t i = 0; i < s.factors.fwhm_dp.size(); ++i)
+    for (const auto& c : s.cases) {
+      const auto& l = c.spec.domain_dp;
+      const double largest = std::max({l[0], l[1], l[2]});
+      if (largest > 0 && s.factors.fwhm_dp[i] > largest) {
+        problems.add_once("/factors/fwhm_dp/" + std::to_string(i),
+                          "the filter width " + json(s.factors.fwhm_dp[i]).dump() +
+                              " d_p exceeds the largest extent " + json(largest).dump() + " d_p of case " +
+                              c.name + "'s domain (docs/LIMITS.md)");
+        break;
+      }
+    }
 }
 
 // parse_job on one job per series catches numerics problems (tolerances,
@@ -377,11 +403,40 @@ void check_jobs(const Study& s, ProblemList& problems) {
   }
 }
 
+// Refuses an over-long name or description at once, before the schema's
+// pattern or any later step reads a 50 MB string (docs/LIMITS.md).
+void check_text_lengths(const json& doc) {
+  ProblemList problems;
+  auto check = [&](const char* key, std::size_t limit, const std::string& why) {
+    const auto it = doc.find(key);
+    if (it == doc.end() || !it->is_string()) return;
+    const std::size_t size = it->get_ref<const std::string&>().size();
+    if (size > limit)
+      problems.add(std::string("/") + key, "is " + std::to_string(size) + " characters long; at most " +
+                                               std::to_string(limit) + " are allowed" + why);
+  };
+  check("name", kMaxStudyNameLength, " (it names the report folder)");
+  check("description", kMaxStudyDescriptionLength, "");
+  problems.throw_if_any();
+}
+
+// An empty {"one_at_a_time": {}} names no baseline: most likely forgotten.
+void check_baseline_given(const json& doc, ProblemList& problems) {
+  const auto d = doc.find("design");
+  if (d == doc.end() || !d->is_object()) return;
+  const auto b = d->find("one_at_a_time");
+  if (b != d->end() && b->is_object() && b->empty())
+    problems.add_once("/design/one_at_a_time",
+                      "names no baseline; give at least one of case, convection, fwhm_dp, drag, deposition (the "
+                      "fields left out are the first case and the first level of each factor)");
+}
+
 }  // namespace
 
 Study parse_study_document(const json& given, const std::filesystem::path& base_dir) {
   ProblemList problems;
   if (!given.is_object()) throw InputError("", "a study must be a JSON object");
+  check_text_lengths(given);
   // Cases that extend others are resolved first; the rest reads the result.
   const json doc = resolve_case_extends(given, problems);
   problems.append(validate_against_schema(doc, "study.schema"));
@@ -409,11 +464,13 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   parse_factors(doc, s, problems);
   default_factors(s);
   parse_design(doc, s, problems);
+  check_baseline_given(doc, problems);
   check_deposition_levels(s, problems);
   parse_grids(doc, s, problems);
   parse_alignment(doc, s, problems);  // study_alignment.cpp
   parse_extrapolation(doc, s, problems);
   parse_ensembles(doc, s, problems);
+  if (problems.empty()) check_filter_widths(doc, s, problems);
   if (problems.empty()) check_grids(s, problems);
   if (problems.empty()) check_jobs(s, problems);
   problems.throw_if_any();

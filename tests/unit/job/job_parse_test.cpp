@@ -111,6 +111,17 @@ TEST(ParseJob, ProbesMustLieInsideTheDomain) {
   EXPECT_TRUE(has_problem(problems_of(j), "/case/probes/pressure_drop/y2_dp"));
 }
 
+TEST(ParseJob, OneCellAlongTheFlowAndAFilterWiderThanTheDomainAreRefused) {
+  json j = test::contract_job();
+  j["numerics"]["grid"] = {{"cells", {1, 1, 1}}};
+  EXPECT_TRUE(has_problem(problems_of(j), "/numerics/grid"));
+  j["numerics"]["grid"] = {{"delta_star", 1000}};
+  EXPECT_TRUE(has_problem(problems_of(j), "/numerics/grid"));
+  j["numerics"]["grid"] = {{"cells", {15, 100, 5}}};
+  j["numerics"]["deposition"] = {{"kind", "diffusion"}, {"fwhm_dp", 1e300}};
+  EXPECT_TRUE(has_problem(problems_of(j), "/numerics/deposition/fwhm_dp"));
+}
+
 TEST(ParseJob, StallWindowIsReadAndOutOfRangeRefused) {
   json j = test::contract_job();
   j["numerics"]["stall_window"] = 250;

@@ -102,7 +102,7 @@ TEST(StudyDefaults, FactorsLeftOutTakeTheirDocumentedDefaults) {
 
   json partial = quickstart_document();
   partial["factors"] = {{"drag", {"bvk", "hkl"}}};
-  partial["design"] = {{"one_at_a_time", json::object()}};  // baseline: first case, first levels
+  partial["design"] = {{"one_at_a_time", {{"drag", "bvk"}}}};  // the rest: first case, first levels
   const auto ex2 = expand(study_of(partial));
   ASSERT_EQ(ex2.series.size(), 2u);
   EXPECT_EQ(ex2.series[0].label(), "PC1 superbee fwhm6 bvk");

@@ -34,6 +34,9 @@ struct Grid {
 
 // Most cells along one direction a job may ask for (docs/LIMITS.md).
 inline constexpr int kMaxCellsPerAxis = 1000000;
+// Fewest cells along y, the flow direction (inflow at y_low to the outlet):
+// the pressure drop needs at least two cells to be resolved at all.
+inline constexpr int kMinFlowCells = 2;
 
 // Cells per direction from a dimensionless cell size: round(L*/Δ*), at least 1;
 // kMaxCellsPerAxis + 1 when L*/Δ* exceeds the limit (or is NaN), so

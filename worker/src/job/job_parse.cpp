@@ -1,10 +1,13 @@
 // parse_numerics and parse_job (job/job_spec.h): schema validation first
 // (schemas/job.schema.json, every problem with its JSON pointer), then the
 // semantic checks, all collected into one InputError.
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/json_fields.h"
 #include "core/schema_validation.h"
+#include "core/text.h"
 #include "grid/grid.h"
 #include "job/job_spec.h"
 
@@ -60,6 +63,11 @@ NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, co
   }
   const double total = static_cast<double>(n.cells[0]) * n.cells[1] * n.cells[2];
   if (total > 2e9) problems.add(grid_at, "more than 2e9 cells");
+  // The pressure drop is taken along y, from the inflow to the outlet: one
+  // cell there has no drop to resolve (docs/LIMITS.md "Grids and memory").
+  if (n.cells[1] >= 1 && n.cells[1] < kMinFlowCells)
+    problems.add(grid_at, "gives " + std::to_string(n.cells[1]) + " cell along y, the flow direction; at least " +
+                              std::to_string(kMinFlowCells) + " are needed (a smaller delta_star or more cells)");
 
   const std::string convection = read_string(j, "convection", path, problems);
   if (auto l = limiter_from_name(convection)) n.convection = *l;
@@ -71,6 +79,13 @@ NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, co
 
   const std::string dep_at = child_pointer(path, "deposition");
   n.deposition = parse_deposition(read_object(j, "deposition", path, problems, true), dep_at, problems);
+  // A filter wider than the whole domain smooths the bed to its mean.
+  const double largest_dp = std::max({domain_dp[0], domain_dp[1], domain_dp[2]});
+  if (largest_dp > 0 && n.deposition.fwhm_dp > largest_dp)
+    problems.add(child_pointer(dep_at, "fwhm_dp"),
+                 "the filter width " + number_text(n.deposition.fwhm_dp) +
+                     " d_p exceeds the domain's largest extent " + number_text(largest_dp) +
+                     " d_p; give at most that (docs/LIMITS.md)");
 
   const std::string tol_at = child_pointer(path, "tolerances");
   const auto& tol = read_object(j, "tolerances", path, problems);
