@@ -73,6 +73,8 @@ ojson verdict_json(const Verdict& v) {
                  {"good_fit", c.good_fit},
                  {"envelope", {num(c.envelope_low), num(c.envelope_high)}},
                  {"inside_envelope", c.inside_envelope},
+                 {"monotone", c.monotone},
+                 {"behind_trend", c.behind_trend},
                  {"rde_finest", num(c.rde_finest)}}}};
 }
 

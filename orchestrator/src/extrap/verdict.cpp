@@ -22,6 +22,34 @@ std::string percent(double v) {
 
 bool finite(const std::optional<double>& v) { return v && std::isfinite(*v); }
 
+// Where f0 lies relative to the data: inside [min f, max f], or how far beyond
+// the smallest/largest value (then within the envelope of k R_f, since the
+// sentence is only used when the envelope rule passed).
+std::string envelope_sentence(double f0, double lo, double hi, double range, double k) {
+  if (f0 >= lo && f0 <= hi) return "f0 lies within the data range [" + g4(lo) + ", " + g4(hi) + "]";
+  const bool above = f0 > hi;
+  const double d = above ? f0 - hi : lo - f0;
+  std::string s = "f0 lies " + g4(d) + (above ? " above the largest" : " below the smallest") + " value " +
+                  g4(above ? hi : lo);
+  if (range > 0) s += " (" + g4(d / range) + " R_f), within the envelope of " + g4(k) + " R_f";
+  return s;
+}
+
+// +1 when every grid-to-grid difference f_{i+1} − f_i (h ascending) is
+// positive, −1 when every one is negative, 0 otherwise or with fewer than
+// `min_steps` differences.
+int monotone_sign(const std::vector<double>& f, std::size_t min_steps) {
+  if (f.size() < min_steps + 1) return 0;
+  int sign = 0;
+  for (std::size_t i = 1; i < f.size(); ++i) {
+    const double d = f[i] - f[i - 1];
+    const int s = d > 0 ? 1 : (d < 0 ? -1 : 0);
+    if (s == 0 || (sign != 0 && s != sign)) return 0;
+    sign = s;
+  }
+  return sign;
+}
+
 std::string next_grid_advice(const Verdict& v, double r) {
   if (!v.next_h) return {};
   return "add the next finer grid Δ* = " + g4(*v.next_h) + " (the series' mean refinement ratio " + g4(r) + ")";
@@ -90,7 +118,13 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
   }
   c.inside_envelope = finite(r.f0) && c.envelope_low && *r.f0 >= *c.envelope_low && *r.f0 <= *c.envelope_high;
   c.order_in_range = finite(r.p) && *r.p >= opts.p_low && *r.p <= opts.p_high;
-  c.good_fit = finite(r.sigma_over_range) && *r.sigma_over_range < 1.0;
+  // With fewer than min_dof degrees of freedom σ_RE rests on too few
+  // residuals to judge the fit: never claimed as good.
+  c.good_fit = finite(r.sigma_over_range) && *r.sigma_over_range < 1.0 && c.dof >= rules.min_dof;
+  // Monotone data: f0 must lie ahead of the finest value along the trend.
+  const int trend = monotone_sign(f, 3);  // +1: f decreases with refinement
+  c.monotone = trend != 0;
+  c.behind_trend = finite(r.f0) && ((trend > 0 && *r.f0 > f.front()) || (trend < 0 && *r.f0 < f.front()));
 
   // Rules that make the extrapolation unreliable.
   std::vector<std::string> unreliable;
@@ -99,11 +133,19 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
     unreliable.push_back(std::to_string(n) + " grids leave " + std::to_string(c.dof) +
                          " degree(s) of freedom for the 3-parameter fit; at least " +
                          std::to_string(rules.min_dof) + " are needed (" +
-                         std::to_string(3 + rules.min_dof) + " grids)");
+                         std::to_string(3 + rules.min_dof) + " grids)" +
+                         (finite(r.sigma_over_range) ? "; the fit (σ_RE/R_f = " + g4(*r.sigma_over_range) +
+                                                           ") cannot be judged"
+                                                     : std::string()));
   if (finite(r.f0) && c.envelope_low && !c.inside_envelope)
     unreliable.push_back("f0 = " + g4(*r.f0) + " lies outside the data envelope [" + g4(*c.envelope_low) + ", " +
                          g4(*c.envelope_high) + "] (min f − " + g4(rules.envelope_k) + " R_f, max f + " +
                          g4(rules.envelope_k) + " R_f): the fit extrapolates far beyond what the grids show");
+  if (c.behind_trend)
+    unreliable.push_back("the data " + std::string(trend > 0 ? "fall" : "rise") + " with every refinement (" +
+                         std::to_string(f.size() - 1) + " grid-to-grid differences of one sign) but f0 = " +
+                         g4(*r.f0) + " lies " + (trend > 0 ? "above" : "below") + " the finest value " +
+                         g4(f.front()) + ": the fit turns back against the trend");
   if (c.rde_finest && *c.rde_finest > rules.rde_unreliable)
     unreliable.push_back("the finest grid's RDE " + percent(*c.rde_finest) + " exceeds " +
                          percent(rules.rde_unreliable));
@@ -114,7 +156,7 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
     missing.push_back(finite(r.p) ? "observed order p = " + g4(*r.p) + " is outside the accepted range [" +
                                         g4(opts.p_low) + ", " + g4(opts.p_high) + "]"
                                   : "no observed order p was found (the power law has no interior minimum)");
-  if (!c.good_fit)
+  if (!c.good_fit && c.dof >= rules.min_dof)
     missing.push_back(finite(r.sigma_over_range)
                           ? "the fit does not describe the data: σ_RE/R_f = " + g4(*r.sigma_over_range) + " ≥ 1"
                           : "the fit quality σ_RE/R_f is undefined");
@@ -133,7 +175,9 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
   } else {
     v.value = "converged";
     v.reasons.push_back("p = " + g4(*r.p) + " in [" + g4(opts.p_low) + ", " + g4(opts.p_high) +
-                        "], σ_RE/R_f = " + g4(*r.sigma_over_range) + " < 1, f0 inside the data envelope, " +
+                        "], σ_RE/R_f = " + g4(*r.sigma_over_range) + " < 1, " +
+                        envelope_sentence(*r.f0, *lo_it, *hi_it, r.data_range.value_or(0.0), rules.envelope_k) +
+                        ", " +
                         std::to_string(c.dof) + " degrees of freedom, finest-grid RDE " +
                         percent(*c.rde_finest) + " ≤ " + percent(rules.rde_converged));
     v.next_h.reset();

@@ -6,9 +6,12 @@
 //   insufficient_grids  n < 4 (no least-squares fit is made)
 //   unreliable          any of: f0 missing; n − 3 < 2 degrees of freedom;
 //                       f0 outside [min f − k R_f, max f + k R_f];
+//                       f0 behind the trend (data monotone with ≥ 3
+//                       differences, f0 on the wrong side of the finest f);
 //                       RDE_1 > rde_unreliable
 //   converged           none of the above and all of: observed order p found
-//                       with p_low ≤ p ≤ p_high; σ_RE/R_f < 1; RDE_1 ≤ rde_converged
+//                       with p_low ≤ p ≤ p_high; σ_RE/R_f < 1 (judged only
+//                       with ≥ 2 degrees of freedom); RDE_1 ≤ rde_converged
 //   pre-asymptotic      otherwise (suggests the next finer grid h_1 / r, r the
 //                       series' mean refinement ratio (h_n/h_1)^(1/(n−1)))
 //

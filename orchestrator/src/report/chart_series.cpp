@@ -1,7 +1,10 @@
 // DP* vs Δ* of one series (see chart_series.h).
 #include "report/chart_series.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "extrap/verdict.h"
 
 #include "report/chart_common.h"
 #include "report/text_format.h"
@@ -53,7 +56,13 @@ std::string fit_subtitle(const SeriesSummary& s) {
   // With a mixed fit chosen, p is the rejected power law's (why it was rejected).
   if (e.p) out += (e.method == "power" ? ", p = " : ", power law's p = ") + format_g(*e.p, 3) +
                   (e.method == "power" ? "" : " (rejected)");
-  if (auto q = e.fit_quality()) out += ", σ_{RE}/R_{f} = " + format_g(*q, 3) + (*q < 1 ? " (good fit)" : " (poor fit)");
+  // With fewer than min_dof degrees of freedom the fit cannot be judged.
+  const int dof = static_cast<int>(e.grids.size()) - 3;
+  if (auto q = e.fit_quality())
+    out += ", σ_{RE}/R_{f} = " + format_g(*q, 3) +
+           (dof < VerdictRules{}.min_dof ? " (fit cannot be judged: " + std::to_string(std::max(dof, 0)) +
+                                               " degree(s) of freedom)"
+                                         : (*q < 1 ? " (good fit)" : " (poor fit)"));
   if (s.insufficient()) out += "; insufficient grids: no uncertainty";
   return out;
 }

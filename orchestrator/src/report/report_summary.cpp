@@ -65,7 +65,8 @@ std::string reading_note(const std::string& section) {
     return "f0 is the extrapolated (grid-free) DP*. The power law f0 + c·h^p is used when its exponent is "
            "found inside the accepted range, otherwise the mixed-order fit f0 + c1·h + c2·h². σ_RE is the "
            "standard deviation of the weighted fit, R_f = (max f − min f)/(ng − 1) the data range; "
-           "σ_RE/R_f < 1 is a good fit. Fs = max(1.25, 3σ_RE/R_f) is the safety factor of U. "
+           "σ_RE/R_f < 1 is a good fit when at least 2 degrees of freedom (ng ≥ 5) are left; with fewer the fit "
+           "cannot be judged. Fs = max(1.25, 3σ_RE/R_f) is the safety factor of U. "
            "Series with fewer than 4 converged grids get no uncertainty. The verdict follows from these "
            "numbers by the rules of docs/EXTRAPOLATION.md (the verdict section above gives the reasons).";
   }

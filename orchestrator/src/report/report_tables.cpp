@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "extrap/verdict.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -152,7 +153,8 @@ Table series_table(const std::vector<SeriesSummary>& series) {
     row.push_back(number_cell(e.data_range, 3));
     const auto quality = e.fit_quality();
     row.push_back(number_cell(quality, 3));
-    row.push_back(text_cell(quality ? (*quality < 1 ? "yes" : "no") : ""));
+    const bool judgeable = static_cast<int>(e.grids.size()) - 3 >= VerdictRules{}.min_dof;
+    row.push_back(text_cell(quality ? (!judgeable ? "cannot be judged" : (*quality < 1 ? "yes" : "no")) : ""));
     row.push_back(number_cell(e.fs, 3));
     std::string reasons;
     for (const auto& r : s.verdict_reasons) reasons += (reasons.empty() ? "" : "; ") + r;

@@ -54,14 +54,74 @@ TEST(ExtrapVerdict, AllRulesMetIsConverged) {
 
 TEST(ExtrapVerdict, EnvelopeEdgesAreInsideAndBeyondIsUnreliable) {
   // Envelope [1018 − 3·1.5, 1024 + 3·1.5] = [1013.5, 1028.5].
+  // The upper edge is tested on data that are not monotone (kF5 fall with
+  // every refinement, so any f0 above its finest value 1018 lies behind the
+  // trend, see MonotoneDataWithF0BehindTheTrendAreUnreliable); same range.
+  const std::vector<double> zigzag{1018, 1019, 1018.5, 1022, 1024};
   EXPECT_EQ(judge(fitted(kH5, kF5, 1013.5, 1.2, 0.3, 0.01), {}).value, "converged");
-  EXPECT_EQ(judge(fitted(kH5, kF5, 1028.5, 1.2, 0.3, 0.01), {}).value, "converged");
+  EXPECT_EQ(judge(fitted(kH5, zigzag, 1028.5, 1.2, 0.3, 0.01), {}).value, "converged");
   const Verdict low = judge(fitted(kH5, kF5, 1013.4, 1.2, 0.3, 0.01), {});
   EXPECT_EQ(low.value, "unreliable");
   EXPECT_TRUE(any_reason_contains(low, "outside the data envelope [1014, 1028]")) << low.reasons.front();
   EXPECT_DOUBLE_EQ(*low.checks.envelope_low, 1013.5);
   EXPECT_DOUBLE_EQ(*low.checks.envelope_high, 1028.5);
-  EXPECT_EQ(judge(fitted(kH5, kF5, 1028.6, 1.2, 0.3, 0.01), {}).value, "unreliable");
+  EXPECT_EQ(judge(fitted(kH5, zigzag, 1028.6, 1.2, 0.3, 0.01), {}).value, "unreliable");
+}
+
+// The converged reason says where f0 lies: within [min f, max f], or how far
+// beyond the data (then within k R_f), never "inside the data envelope" for
+// an f0 beyond every data point.
+TEST(ExtrapVerdict, ConvergedReasonStatesWhereF0Lies) {
+  const Verdict below = judge(fitted(kH5, kF5, 1017.0, 1.2, 0.3, 0.01), {});
+  ASSERT_EQ(below.value, "converged");
+  EXPECT_TRUE(any_reason_contains(below, "f0 lies 1 below the smallest value 1018 (0.6667 R_f), within the "
+                                         "envelope of 3 R_f")) << below.reasons.front();
+  EXPECT_FALSE(any_reason_contains(below, "inside the data envelope"));
+  // The trial's case: data zigzag up to 1015.6, f0 = 1016.4 above all of them.
+  const std::vector<double> f{1015.6, 1014.9, 1015.3, 1014.1, 1013.7};
+  const Verdict above = judge(fitted(kH5, f, 1016.4, 1.2, 0.3, 0.01), {});
+  ASSERT_EQ(above.value, "converged") << above.reasons.front();
+  EXPECT_TRUE(any_reason_contains(above, "f0 lies 0.8 above the largest value 1016")) << above.reasons.front();
+  const std::vector<double> g{1018, 1019, 1017, 1022, 1024};
+  const Verdict inside = judge(fitted(kH5, g, 1017.5, 1.2, 0.3, 0.01), {});
+  ASSERT_EQ(inside.value, "converged") << inside.reasons.front();
+  EXPECT_TRUE(any_reason_contains(inside, "f0 lies within the data range [1017, 1024]"));
+}
+
+// Data changing with one sign on every refinement (≥ 3 differences) and an
+// f0 on the wrong side of the finest value: unreliable.
+TEST(ExtrapVerdict, MonotoneDataWithF0BehindTheTrendAreUnreliable) {
+  // kF5 fall with every refinement (1024 → 1018): f0 above 1018 is behind.
+  const Verdict fall = judge(fitted(kH5, kF5, 1019.0, 1.2, 0.3, 0.01), {});
+  EXPECT_EQ(fall.value, "unreliable");
+  EXPECT_TRUE(fall.checks.monotone);
+  EXPECT_TRUE(fall.checks.behind_trend);
+  EXPECT_TRUE(any_reason_contains(fall, "the data fall with every refinement (4 grid-to-grid differences of one "
+                                        "sign) but f0 = 1019 lies above the finest value 1018"))
+      << fall.reasons.front();
+  // Rising with refinement, f0 below the finest value.
+  const std::vector<double> rise{1024, 1022, 1020, 1019, 1018};
+  const Verdict r = judge(fitted(kH5, rise, 1023.0, 1.2, 0.3, 0.01), {});
+  EXPECT_EQ(r.value, "unreliable");
+  EXPECT_TRUE(any_reason_contains(r, "rise with every refinement")) << r.reasons.front();
+  // Ahead of the trend (or at the finest value) is fine.
+  EXPECT_EQ(judge(fitted(kH5, rise, 1025.0, 1.2, 0.3, 0.01), {}).value, "converged");
+  EXPECT_EQ(judge(fitted(kH5, kF5, 1018.0, 1.2, 0.3, 0.01), {}).value, "converged");
+  // A zigzag is not monotone: the rule does not apply.
+  const Verdict z = judge(fitted(kH5, {1018, 1019, 1018.5, 1022, 1024}, 1019.0, 1.2, 0.3, 0.01), {});
+  EXPECT_EQ(z.value, "converged");
+  EXPECT_FALSE(z.checks.monotone);
+  // Two differences are not enough to call a trend (n = 3: insufficient anyway, via judge's n < 4 rule).
+}
+
+// With fewer than 2 degrees of freedom σ_RE/R_f < 1 is not a good fit: the
+// fit cannot be judged.
+TEST(ExtrapVerdict, OneDegreeOfFreedomCannotJudgeTheFit) {
+  const std::vector<double> h{0.5, 1.0, 1.5, 2.0}, f{1018, 1020, 1019, 1024};
+  const Verdict v = judge(fitted(h, f, 1017.0, 1.0, 0.1, 0.01), {});
+  EXPECT_FALSE(v.checks.good_fit);
+  EXPECT_TRUE(any_reason_contains(v, "the fit (σ_RE/R_f = 0.1) cannot be judged")) << v.reasons.front();
+  EXPECT_FALSE(any_reason_contains(v, "does not describe the data"));
 }
 
 TEST(ExtrapVerdict, OneDegreeOfFreedomIsUnreliable) {

@@ -118,6 +118,15 @@ TEST(ChartRules, F0RoundedToTheDigitsUSupports) {
   EXPECT_NE(chart.subtitle.find("σ_{RE}/R_{f}"), std::string::npos);
 }
 
+// Series A has 4 grids (one degree of freedom): σ_RE/R_f = 0.125 < 1 is not
+// called a good fit, the subtitle says the fit cannot be judged.
+TEST(ChartRules, SubtitleClaimsNoGoodFitWithOneDegreeOfFreedom) {
+  const Chart chart = series_chart(test::synthetic_summaries()[0], 0);
+  EXPECT_EQ(chart.subtitle.find("good fit"), std::string::npos) << chart.subtitle;
+  EXPECT_NE(chart.subtitle.find("(fit cannot be judged: 1 degree(s) of freedom)"), std::string::npos)
+      << chart.subtitle;
+}
+
 // With a mixed fit chosen the subtitle's p is the rejected power law's and
 // says so; with the power law chosen it is the fit's own order.
 TEST(ChartRules, SubtitleSaysWhosePIsShown) {
