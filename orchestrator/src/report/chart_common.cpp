@@ -28,7 +28,14 @@ std::optional<double> finest_u(const SeriesSummary& s) {
 
 std::string f0_label(const SeriesSummary& s) {
   const auto f0 = s.f0();
-  return f0 ? "f_{0} = " + format_with_uncertainty(*f0, finest_u(s), 6) : std::string();
+  return f0 ? "f_{0} = " + format_to_uncertainty_digits(*f0, finest_u(s), 6) : std::string();
+}
+
+std::string finest_label(const SeriesSummary& s) {
+  if (!s.extrapolation || s.extrapolation->grids.empty()) return {};
+  const ExtrapolatedGrid& g = s.extrapolation->grids.front();
+  return "f_{1} = " + format_with_uncertainty(g.f, g.u, 6) + (g.u ? "" : " (no U)") + " (finest Δ* = " +
+         format_g(g.h, 3) + ")";
 }
 
 }  // namespace gridfree

@@ -17,9 +17,13 @@ std::string series_slug(const SeriesSummary& s, std::size_t index);
 std::string title_suffix(const SeriesSummary& s);
 // The Δ* axis: linear from 0, log when the grids span more than a decade.
 ChartAxis delta_star_axis(std::string label = "Δ* (cell size / particle diameter)");
-// U of the series' finest grid (the f0 ± U the report quotes), if any.
+// U_1 of the series' finest grid (an interval about f_1, not about f0), if any.
 std::optional<double> finest_u(const SeriesSummary& s);
-// "f_{0} = 1017.0 ± 1.5": f0 rounded to the digits U supports (text_format.h).
+// "f_{0} = 1017.0": f0 rounded to the digits U_1 supports (text_format.h),
+// without ± — U_1 belongs to the finest grid's f_1, f0 has no uncertainty of its own.
 std::string f0_label(const SeriesSummary& s);
+// "f_{1} = 1018.2 ± 1.5 (finest Δ* = 0.5)": the finest grid's value with its
+// own U_1; empty without an extrapolated finest grid.
+std::string finest_label(const SeriesSummary& s);
 
 }  // namespace gridfree

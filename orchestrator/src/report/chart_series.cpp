@@ -53,6 +53,7 @@ std::string fit_subtitle(const SeriesSummary& s) {
   if (!s.extrapolation || !s.f0()) return s.note().empty() ? "no extrapolation" : s.note();
   const ExtrapolationView& e = *s.extrapolation;
   std::string out = "method " + (e.method.empty() ? std::string("?") : e.method) + ", " + f0_label(s);
+  if (const std::string f1 = finest_label(s); !f1.empty()) out += ", " + f1;
   // With a mixed fit chosen, p is the rejected power law's (why it was rejected).
   if (e.p) out += (e.method == "power" ? ", p = " : ", power law's p = ") + format_g(*e.p, 3) +
                   (e.method == "power" ? "" : " (rejected)");

@@ -43,10 +43,13 @@ std::vector<VerdictItem> verdict_items(const ReportContent& c) {
     if (const auto f0 = s.f0()) {
       const auto& grids = s.extrapolation->grids;
       const std::optional<double> u = grids.empty() ? std::nullopt : grids.front().u;
-      item.headline = "f0 = " + format_with_uncertainty(*f0, u);
-      if (!grids.empty() && u)
-        item.headline += " (U of the finest grid, Δ* = " + format_g(grids.front().h, 4) +
-                         ", RDE " + format_percent(grids.front().rde) + ")";
+      // f0 has no uncertainty of its own: U_1 is the finest grid's, an
+      // interval about f_1, so it is printed with f_1, never with f0.
+      item.headline = "f0 = " + format_to_uncertainty_digits(*f0, u);
+      if (!grids.empty())
+        item.headline += "; finest grid Δ* = " + format_g(grids.front().h, 4) + ": f₁ = " +
+                         format_with_uncertainty(grids.front().f, u) +
+                         (u ? " (U₁, RDE " + format_percent(grids.front().rde) + ")" : "");
     } else {
       item.headline = "no extrapolated value";
     }

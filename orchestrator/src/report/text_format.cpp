@@ -119,4 +119,10 @@ std::string format_with_uncertainty(double value, const std::optional<double>& u
   return buf;
 }
 
+std::string format_to_uncertainty_digits(double value, const std::optional<double>& u, int digits) {
+  const std::string s = format_with_uncertainty(value, u, digits);
+  const auto pm = s.find(" ± ");
+  return pm == std::string::npos ? s : s.substr(0, pm);
+}
+
 }  // namespace gridfree

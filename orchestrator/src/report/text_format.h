@@ -35,6 +35,10 @@ std::string format_percent(const std::optional<double>& fraction, int digits = 3
 // same decimal place (no more digits than U supports). Without a usable U
 // (absent, zero or not finite) the value alone with `digits` significant digits.
 std::string format_with_uncertainty(double value, const std::optional<double>& u, int digits = 6);
+// The value part of format_with_uncertainty alone ("1017.3"): rounded to the
+// decimal place U supports, without "± U" — for a value U does not belong to
+// (f0 printed beside the finest grid's f_1 ± U_1).
+std::string format_to_uncertainty_digits(double value, const std::optional<double>& u, int digits = 6);
 
 // A file-name-safe slug: letters, digits, '-' and '_' kept, the rest '_'.
 std::string slugify(std::string_view text);

@@ -106,15 +106,20 @@ TEST(ChartRules, PointLabelsDoNotOverlap) {
   EXPECT_EQ(svg.find(">0.7</text>"), std::string::npos);
 }
 
-// The f0 line and subtitle quote f0 ± U with U (finest grid) to two
-// significant digits. Series A: f0 = 1000, U(0.5) = 1.25·8·0.5 + 0.5 = 5.5.
+// U_1 belongs to the finest grid: the subtitle quotes f_1 ± U_1 (U_1 to two
+// significant digits), the f0 line and subtitle f0 alone, to the digits U_1
+// supports — never f0 ± U_1. Series A: f0 = 1000, finest Δ* = 0.5 with
+// f_1 = 1000 + 8·0.5 = 1004, U_1 = 1.25·4 + 0.5 = 5.5.
 TEST(ChartRules, F0RoundedToTheDigitsUSupports) {
   EXPECT_EQ(format_with_uncertainty(1016.9954, 1.52), "1017.0 ± 1.5");
   EXPECT_EQ(format_with_uncertainty(1016.9413, 0.2712), "1016.94 ± 0.27");
+  EXPECT_EQ(format_to_uncertainty_digits(1016.9413, 0.2712), "1016.94");
   const Chart chart = series_chart(test::synthetic_summaries()[0], 0);
-  EXPECT_NE(chart.subtitle.find("f_{0} = 1000.0 ± 5.5"), std::string::npos) << chart.subtitle;
+  EXPECT_NE(chart.subtitle.find("f_{0} = 1000.0,"), std::string::npos) << chart.subtitle;
+  EXPECT_EQ(chart.subtitle.find("f_{0} = 1000.0 ±"), std::string::npos) << chart.subtitle;
+  EXPECT_NE(chart.subtitle.find("f_{1} = 1004.0 ± 5.5 (finest Δ* = 0.5)"), std::string::npos) << chart.subtitle;
   ASSERT_EQ(chart.hlines.size(), 1u);
-  EXPECT_EQ(chart.hlines[0].label, "f_{0} = 1000.0 ± 5.5");
+  EXPECT_EQ(chart.hlines[0].label, "f_{0} = 1000.0");
   EXPECT_NE(chart.subtitle.find("σ_{RE}/R_{f}"), std::string::npos);
 }
 

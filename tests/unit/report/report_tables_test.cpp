@@ -9,6 +9,8 @@
 #include "report/differences.h"
 #include "report/report_charts.h"
 #include "report/svg_chart.h"
+#include "report/report_content.h"
+#include "report/report_summary.h"
 #include "report/report_tables.h"
 #include "report/series_summary.h"
 #include "report_test_data.h"
@@ -244,6 +246,21 @@ TEST(ReportTables, GciTableComparesWithF0) {
   // A's second triplet: φ_ext = 1000 + 100 → (φ_ext − f0)/f0 = 0.1.
   EXPECT_DOUBLE_EQ(std::stod(t.rows[1][10].exact), 0.1);
   EXPECT_EQ(t.rows[4][10].exact, "");  // C has no f0
+}
+
+// The verdict line prints f0 without ± and the finest grid as f₁ ± U₁: U₁ is
+// an interval about f₁, not about f0. Series A: f0 = 1000, f₁ = 1004 at
+// Δ* = 0.5, U₁ = 1.25·4 + 0.5 = 5.5.
+TEST(ReportTables, VerdictHeadlineGivesUOnlyWithTheFinestGrid) {
+  ReportContent c;
+  c.series = test::synthetic_summaries();
+  const auto items = verdict_items(c);
+  ASSERT_EQ(items.size(), 3u);
+  const std::string& h = items[0].headline;
+  EXPECT_EQ(h.rfind("f0 = 1000.0; ", 0), 0u) << h;
+  EXPECT_NE(h.find("finest grid Δ* = 0.5: f₁ = 1004.0 ± 5.5 (U₁, RDE"), std::string::npos) << h;
+  EXPECT_EQ(h.find("f0 = 1000.0 ±"), std::string::npos) << h;
+  EXPECT_EQ(items[2].headline, "no extrapolated value");
 }
 
 }  // namespace
