@@ -39,12 +39,14 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
   Chart chart;
   chart.id = cpu ? "speed-accuracy" : "speed-accuracy-work";
   chart.title = cpu ? "What a target costs: CPU time against RDE" : "What a target costs: cells × iterations against RDE";
-  chart.subtitle = "each converged grid at its a-priori RDE = U_{i}/|f_{0}|; the Pareto front connected, dominated grids faded";
+  chart.subtitle = "each converged grid at its a-priori RDE = U_{i}/|f_{0}|; the Pareto front of each converged "
+                   "series connected, dominated grids faded; series not converged hollow and never on a front";
   chart.x = {"RDE (a priori, %)", AxisScale::linear, 0.0, std::nullopt};
   chart.x.auto_log = true;
   chart.x.tick_suffix = "%";
   chart.y = {cpu ? "CPU time (s, this machine)" : "cells × outer iterations", AxisScale::linear, 0.0, std::nullopt};
   chart.y.auto_log = true;
+  std::vector<ChartSeries> unconverged;
   for (std::size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];
     if (!s.extrapolation || !s.f0()) continue;
@@ -56,8 +58,21 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
       points.push_back({*e->rde * 100.0, grid_cost(g, measure)});
       h.push_back(g.delta_star);
     }
+    const std::string legend = s.label + title_suffix(s) + " (" + (s.verdict.empty() ? "no verdict" : s.verdict) + ")";
+    if (s.verdict != "converged") {
+      // Its RDEs come from an extrapolation that may still move: drawn
+      // hollow and dashed, never as a front to pick a grid from.
+      ChartSeries other{legend, {}, {}, {}, marker_for(int(i)), true, true, true, int(i)};
+      for (std::size_t k = 0; k < points.size(); ++k) {
+        if (!std::isfinite(points[k].rde) || !std::isfinite(points[k].cost)) continue;
+        other.x.push_back(points[k].rde);
+        other.y.push_back(points[k].cost);
+      }
+      if (!other.x.empty()) unconverged.push_back(std::move(other));
+      continue;
+    }
     const auto front = pareto_front(points);
-    ChartSeries on{s.label + title_suffix(s), {}, {}, {}, marker_for(int(i)), true, false, false, int(i)};
+    ChartSeries on{legend, {}, {}, {}, marker_for(int(i)), true, false, false, int(i)};
     ChartSeries off{"", {}, {}, {}, marker_for(int(i)), false, false, false, int(i)};
     off.faded = true;
     for (std::size_t k : front) {
@@ -74,8 +89,10 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
     if (!off.x.empty()) chart.series.push_back(off);
   }
   if (chart.series.empty()) {
-    chart.note = "No series has an uncertainty yet (needs 4 converged grids).";
+    // Nothing converged to recommend: the chart is not written (report_charts.cpp).
+    chart.note = "No converged series: no grid can be recommended.";
   } else {
+    for (auto& u : unconverged) chart.series.push_back(std::move(u));
     chart.series.push_back({"faded: dominated grid", {}, {}, {},
                             Marker::circle, false, false, false, 7});
     chart.series.back().faded = true;

@@ -5,8 +5,11 @@
 // another grid of the same series is at least as accurate (RDE ≤) and at
 // most as expensive (cost ≤), and strictly better in one of the two: nobody
 // should run it. Dominated grids are drawn faded; the others, the Pareto
-// front, are connected in order of RDE. Axes log when the data span more
-// than a decade (chart_axis.h scale_for_span).
+// front, are connected in order of RDE. Only `converged` series get a front:
+// the others are drawn hollow and dashed (legend "label (verdict)"), never as
+// a front, and without any converged series the chart has no series (and is
+// not written, report_charts.cpp). Axes log when the data span more than a
+// decade (chart_axis.h scale_for_span).
 #pragma once
 
 #include <cstddef>

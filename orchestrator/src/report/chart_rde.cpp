@@ -9,7 +9,8 @@ Chart rde_chart(const std::vector<SeriesSummary>& series) {
   Chart chart;
   chart.id = "fig2-rde";
   chart.title = "Relative discretization error bound RDE = U/|f_{0}|";
-  chart.subtitle = "series with at least 4 converged grids; log axes when the data span more than a decade";
+  chart.subtitle = "series with at least 4 converged grids, each with its verdict (not converged: dashed, hollow); "
+                   "log axes when the data span more than a decade";
   chart.x = delta_star_axis();
   chart.y = {"RDE (%)", AxisScale::linear, 0.0, std::nullopt};
   chart.y.auto_log = true;
@@ -17,7 +18,10 @@ Chart rde_chart(const std::vector<SeriesSummary>& series) {
   for (std::size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];
     if (!s.extrapolation) continue;
-    ChartSeries c{s.label + title_suffix(s), {}, {}, {}, marker_for(int(i)), true, false, false, int(i)};
+    // The verdict in the legend; a series that is not converged dashed and hollow.
+    const bool converged = s.verdict == "converged";
+    ChartSeries c{s.label + title_suffix(s) + " (" + (s.verdict.empty() ? "no verdict" : s.verdict) + ")",
+                  {}, {}, {}, marker_for(int(i)), true, !converged, !converged, int(i)};
     for (const auto& g : s.extrapolation->grids) {
       if (!g.rde) continue;
       c.x.push_back(g.h);

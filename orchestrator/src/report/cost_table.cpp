@@ -48,9 +48,14 @@ Table cost_table(const std::vector<SeriesSummary>& series, const std::vector<dou
   for (const auto& s : series) {
     if (!s.f0()) continue;  // no extrapolated value, no RDE
     for (double target : targets) {
-      const GridPoint* g = cheapest_grid_for(s, target);
+      // Only a converged series names a grid: the others' RDEs may still move.
+      const bool converged = s.verdict == "converged";
+      const GridPoint* g = converged ? cheapest_grid_for(s, target) : nullptr;
       std::vector<Cell> row{text_cell(s.label), text_cell(s.verdict), percent_cell(target)};
-      if (!g) {
+      if (!converged) {
+        row.push_back(text_cell("— (series " + (s.verdict.empty() ? std::string("without verdict") : s.verdict) + ")"));
+        for (int k = 0; k < 5; ++k) row.push_back(text_cell(""));
+      } else if (!g) {
         row.push_back(text_cell(kNoGridMeetsTarget));
         for (int k = 0; k < 5; ++k) row.push_back(text_cell(""));
       } else {

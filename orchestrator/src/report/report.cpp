@@ -20,13 +20,15 @@ namespace gridfree {
 namespace {
 
 // Per-series charts of an earlier run whose series no longer exist (e.g. a
-// study redefined under the same name) would be misleading: remove them.
+// study redefined under the same name) would be misleading: remove them; so
+// would speed-accuracy charts once no series is converged (report_charts.cpp).
 void remove_stale_charts(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& written) {
   std::error_code ec;
   std::vector<std::filesystem::path> stale;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    const bool per_series = name.rfind("fig1_", 0) == 0 || name.rfind("gci_", 0) == 0;
+    const bool per_series = name.rfind("fig1_", 0) == 0 || name.rfind("gci_", 0) == 0 ||
+                            name.rfind("speed_accuracy", 0) == 0;
     const auto ext = entry.path().extension();
     if (!per_series || (ext != ".svg" && ext != ".pdf" && ext != ".png")) continue;
     auto as_svg = entry.path();

@@ -10,13 +10,19 @@ std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series) 
   out.push_back({"fig2_rde.svg",
                  "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
                  rde_chart(series), {}});
-  out.push_back({"speed_accuracy.svg",
-                 "CPU time against a-priori RDE: the Pareto front of each series connected, dominated grids faded; "
-                 "the cheapest grid for a target RDE is the lowest front point left of it.",
-                 speed_accuracy_chart(series, CostMeasure::cpu_seconds), {}});
-  out.push_back({"speed_accuracy_work.svg",
-                 "The same with the machine-independent cost cells × outer iterations.",
-                 speed_accuracy_chart(series, CostMeasure::cell_iterations), {}});
+  // The speed-accuracy charts recommend grids: written only when a converged
+  // series has a front to draw (chart_pareto.h).
+  Chart cpu = speed_accuracy_chart(series, CostMeasure::cpu_seconds);
+  if (!cpu.series.empty())
+    out.push_back({"speed_accuracy.svg",
+                   "CPU time against a-priori RDE: the Pareto front of each converged series connected, dominated "
+                   "grids faded, series not converged hollow and never on a front; the cheapest grid for a target "
+                   "RDE is the lowest front point left of it.",
+                   std::move(cpu), {}});
+  Chart work = speed_accuracy_chart(series, CostMeasure::cell_iterations);
+  if (!work.series.empty())
+    out.push_back({"speed_accuracy_work.svg",
+                   "The same with the machine-independent cost cells × outer iterations.", std::move(work), {}});
   for (std::size_t i = 0; i < series.size(); ++i) {
     const std::string slug = series_slug(series[i], i);
     out.push_back({"fig1_" + slug + ".svg", "DP* against Δ* for " + series[i].label + ", with the fits, f0 and U.",

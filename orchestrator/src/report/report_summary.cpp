@@ -98,7 +98,7 @@ std::string reading_note(const std::string& section) {
            "that grid from the series' extrapolation; \"none of the run grids\" means a finer grid is "
            "needed. On oscillatory convergence a coarse grid can land near f0 by chance: its small RDE "
            "does not count while a finer grid misses the target. A series that is not `converged` "
-           "names its grids from an extrapolation that may still move.";
+           "names no grid (\"— (series pre-asymptotic)\"): its extrapolation may still move.";
   }
   if (section == "gci.csv") {
     return "The classic three-grid procedure (apparent order by fixed-point iteration, φ_ext and "

@@ -6,6 +6,7 @@
 // manufactured data of report_test_data.h, never read back from the code.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
@@ -178,13 +179,23 @@ TEST(ChartRules, ParetoFrontExcludesDominatedPoints) {
 }
 
 // In the synthetic data a finer grid is always more accurate and dearer, so
-// every grid is on the front: A's 4 grids, B's 4 converged grids.
+// every grid of A (converged) is on its front. B is pre-asymptotic: its 4
+// grids are drawn hollow and dashed, never as a front, and every legend
+// carries the series' verdict.
 TEST(ChartRules, SpeedAccuracyChartsPlotTheFront) {
   for (auto measure : {CostMeasure::cpu_seconds, CostMeasure::cell_iterations}) {
     const Chart chart = speed_accuracy_chart(test::synthetic_summaries(), measure);
-    ASSERT_GE(chart.series.size(), 2u);
+    ASSERT_EQ(chart.series.size(), 3u);
     EXPECT_EQ(chart.series[0].x.size(), 4u);
     EXPECT_EQ(chart.series[0].point_labels[0], "Δ* 0.5");  // most accurate first
+    EXPECT_EQ(chart.series[0].name, "PC1 superbee fwhm6 bvk (converged)");
+    EXPECT_FALSE(chart.series[0].hollow);
+    const ChartSeries& b = chart.series[1];
+    EXPECT_EQ(b.name, "PC1 superbee fwhm6 hkl (pre-asymptotic)");
+    EXPECT_EQ(b.x.size(), 4u);
+    EXPECT_TRUE(b.hollow);
+    EXPECT_TRUE(b.dashed);
+    EXPECT_TRUE(b.point_labels.empty());                  // no front labels
     EXPECT_TRUE(chart.series.back().faded);               // the "dominated" legend entry
   }
   // Cost of A's finest grid: 60×400×20 cells × (100 + 200) iterations.
@@ -216,6 +227,11 @@ TEST(ChartRules, TargetTableMatchesABruteForceSearch) {
         }
       }
       const auto& r = t.rows[row++];
+      if (m == &test::kB) {  // B is pre-asymptotic: no grid is named, the table says why
+        EXPECT_EQ(r[3].exact, "— (series pre-asymptotic)") << "target " << target;
+        EXPECT_EQ(r[6].exact, "");
+        continue;
+      }
       if (best_h < 0) {
         EXPECT_EQ(r[3].exact, "none of the run grids") << "target " << target;
         continue;
@@ -227,6 +243,28 @@ TEST(ChartRules, TargetTableMatchesABruteForceSearch) {
   }
   EXPECT_EQ(row, t.rows.size());
   EXPECT_EQ(t.columns[7].name, "peak_rss_mb");
+}
+
+// Without any converged series nothing can be recommended: the
+// speed-accuracy charts have no series and report_charts() leaves them out;
+// the RDE chart still shows every series, its legend naming the verdict.
+TEST(ChartRules, NoSpeedAccuracyChartWithoutAConvergedSeries) {
+  auto s = test::synthetic_summaries();
+  s[0].verdict = "unreliable";
+  EXPECT_TRUE(speed_accuracy_chart(s, CostMeasure::cpu_seconds).series.empty());
+  for (const NamedChart& c : report_charts(s)) {
+    EXPECT_NE(c.file, "speed_accuracy.svg");
+    EXPECT_NE(c.file, "speed_accuracy_work.svg");
+  }
+  const Chart rde = rde_chart(s);
+  ASSERT_EQ(rde.series.size(), 2u);
+  EXPECT_EQ(rde.series[0].name, "PC1 superbee fwhm6 bvk (unreliable)");
+  EXPECT_TRUE(rde.series[0].dashed);
+  EXPECT_TRUE(rde.series[0].hollow);
+  const auto all = report_charts(test::synthetic_summaries());
+  EXPECT_EQ(std::count_if(all.begin(), all.end(), [](const NamedChart& c) {
+              return c.file.rfind("speed_accuracy", 0) == 0;
+            }), 2);
 }
 
 }  // namespace

@@ -10,7 +10,8 @@
 // for ng ≥ 4 it returns the known f0, p, c of the manufactured data, the
 // data range R_f = (max f − min f)/(ng − 1), σ_RE = kSigma, Fs = 1.25 and
 // U_i = Fs|f0 − f_i| + σ_RE, RDE_i = U_i/|f0| (PHYSICS.md §8); for ng < 4 it
-// returns "insufficient_grids" with null numbers. GCI triplets carry
+// returns "insufficient_grids" with null numbers; verdict A converged, B
+// pre-asymptotic (none for ng < 4). GCI triplets carry
 // φ_ext = f0 + 100·(triplet index) so tests can find them.
 #pragma once
 
@@ -111,6 +112,12 @@ inline nlohmann::json fake_extrapolation(const std::vector<double>& h, const std
                         {"gci_fine", 0.001}, {"convergence", "monotone"}, {"status", "ok"}});
   }
   j["notes"] = json::array();
+  // A is converged, B pre-asymptotic (so the charts and the cost table see
+  // both kinds); C (ng < 4) gets no verdict from the stand-in.
+  if (enough)
+    j["verdict"] = {{"value", &m == &kA ? "converged" : "pre-asymptotic"},
+                    {"reasons", json::array({"stand-in verdict"})},
+                    {"next_h", nullptr}};
   return j;
 }
 
