@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "flow/residuals.h"
 
@@ -55,6 +56,30 @@ std::string not_converged_reason(const std::string& count, const SimpleOutcome& 
   return "not converged after " + count + ": " + residuals_text(out.continuity, out.momentum) +
          ", relative change of the quantity of interest " + residual_text(out.qoi_change) + " (tolerance " +
          residual_text(tolerance) + ")";
+}
+
+std::string steady_check_note(const std::optional<SteadyCheck>& last, int drag_interval, int min_iterations,
+                              double tolerance) {
+  if (drag_interval <= 1) return {};
+  std::string out = "; the steady criterion is checked on drag-update iterations (every " +
+                    std::to_string(drag_interval) + (drag_interval == 2 ? "nd" : drag_interval == 3 ? "rd" : "th") +
+                    ")";
+  if (!last) return out + "; none was checked";
+  std::vector<std::string> failed;
+  const std::string tol = residual_text(tolerance);
+  if (last->iteration < min_iterations)
+    failed.push_back("the minimum of " + std::to_string(min_iterations) + " iterations");
+  if (!(last->continuity < tolerance))
+    failed.push_back("the continuity residual " + residual_text(last->continuity) + " ≥ " + tol);
+  if (!(last->momentum < tolerance))
+    failed.push_back("the momentum residual " + residual_text(last->momentum) + " ≥ " + tol);
+  if (last->qoi_change && !(*last->qoi_change < tolerance))
+    failed.push_back("the relative change of the quantity of interest " + residual_text(*last->qoi_change) +
+                     " ≥ " + tol);
+  out += "; the last check, at iteration " + std::to_string(last->iteration) + ", failed on ";
+  for (std::size_t i = 0; i < failed.size(); ++i) out += (i ? (i + 1 == failed.size() ? " and " : ", ") : "") + failed[i];
+  if (failed.empty()) out += "nothing (it passed)";
+  return out;
 }
 
 }  // namespace gridfree

@@ -38,4 +38,20 @@ std::string residuals_text(double continuity, double momentum);
 // relative change of the quantity of interest … (tolerance …)"
 std::string not_converged_reason(const std::string& count, const SimpleOutcome& out, double tolerance);
 
+// The numbers of the last iteration on which the steady criterion was checked.
+struct SteadyCheck {
+  int iteration = 0;
+  double continuity = 0, momentum = 0;
+  std::optional<double> qoi_change;  // empty without a quantity of interest
+};
+
+// What a not_converged reason adds when the steady criterion is checked only
+// on drag-update iterations (drag_interval > 1), since the residuals it
+// quotes are the last iteration's, not the last check's: "; the steady
+// criterion is checked on drag-update iterations (every 4th); the last check,
+// at iteration 29, failed on the continuity residual 2.1e-05 ≥ 1e-05". Empty
+// when every iteration is checked.
+std::string steady_check_note(const std::optional<SteadyCheck>& last, int drag_interval, int min_iterations,
+                              double tolerance);
+
 }  // namespace gridfree

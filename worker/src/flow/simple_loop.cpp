@@ -35,6 +35,7 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
   std::optional<StallMonitor> stall;
   if (settings.stall_window > 0) stall.emplace(settings.stall_window);
 
+  std::optional<SteadyCheck> last_check;  // the last iteration the steady criterion looked at
   int first_iteration = 1;
   if (control.resume) {
     first_iteration = control.resume->iteration + 1;
@@ -87,6 +88,8 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
     const double tol = settings.steady_tolerance;
     // Steady only in an iteration that updated the drag: its β comes from
     // the iterate it started from, as with an update every iteration.
+    if (drag_fresh) last_check = SteadyCheck{it, report.continuity, report.momentum,
+                                             qoi ? std::optional<double>(report.qoi_change) : std::nullopt};
     if (it >= settings.min_iterations && drag_fresh && report.continuity < tol && report.momentum < tol &&
         (!qoi || report.qoi_change < tol)) {
       out.status = SolveStatus::kConverged;
@@ -109,7 +112,10 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
   }
   out.status = SolveStatus::kNotConverged;
   out.reason = not_converged_reason(std::to_string(settings.max_iterations) + " iterations", out,
-                                    settings.steady_tolerance);
+                                    settings.steady_tolerance) +
+               (drag ? steady_check_note(last_check, settings.drag_interval, settings.min_iterations,
+                                         settings.steady_tolerance)
+                     : std::string());
   return out;
 }
 
