@@ -5,12 +5,17 @@
 
 namespace gridfree {
 
+// Jobs of one grid size need the same memory, so the rule (sched/budget.h)
+// only ever picks the first of each size in queue order: one row per study
+// and size is read, not the whole queue (tens of thousands of jobs in an
+// ensemble study, and a claim for every start).
 std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study) {
   auto st = store.db().prepare(
-      "SELECT DISTINCT j.id, j.nx, j.ny, j.nz FROM jobs j JOIN study_jobs sj ON sj.job_id = j.id "
+      "SELECT MIN(j.id), j.nx, j.ny, j.nz FROM jobs j JOIN study_jobs sj ON sj.job_id = j.id "
       "JOIN studies s ON s.id = sj.study_id "
       "WHERE j.status = 'queued' AND s.status IN ('queued','running') AND (?1 IS NULL OR s.id = ?1) "
-      "ORDER BY s.id, j.cells DESC, j.id");
+      "GROUP BY s.id, j.nx, j.ny, j.nz "
+      "ORDER BY s.id, MAX(j.cells) DESC, MIN(j.id)");
   st.bind_all(study);
   std::vector<QueuedJob> out;
   while (st.step()) {

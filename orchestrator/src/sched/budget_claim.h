@@ -10,7 +10,8 @@
 
 namespace gridfree {
 
-// The queued jobs in scope with need(job) from their cells.
+// The first queued job of each grid size in each study in scope, in queue
+// order, with need(job) from its cells (the only candidates the rule picks).
 std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study);
 
 // nullopt: nothing may start now (or another process claimed the pick first;

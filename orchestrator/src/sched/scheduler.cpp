@@ -16,6 +16,8 @@
 #include "sched/job_timeout.h"
 #include "study/cost_model.h"
 #include "sched/outcome.h"
+#include "sched/progress_tally.h"
+#include "sched/report_pacer.h"
 #include "sched/series_finish.h"
 #include "sched/study_status.h"
 #include "store/owner.h"
@@ -75,7 +77,8 @@ std::vector<long long> studies_of_job(Store& store, long long job_id) {
   return out;
 }
 
-ProgressCounts counts(Store& store, const SchedulerOptions& o) {
+// Counts of the studies this loop works on, from the store (without an ETA).
+ProgressCounts store_counts(Store& store, const SchedulerOptions& o) {
   ProgressCounts c;
   c.workers = o.workers;
   for (const auto& s : store.statuses(o.study)) {
@@ -86,9 +89,23 @@ ProgressCounts counts(Store& store, const SchedulerOptions& o) {
     c.running += s.running;
     if (s.mean_wall_s > 0) c.mean_wall_s = s.mean_wall_s;
   }
-  // One study: the cost model scaled by measured times (sched/study_eta.h).
-  if (o.study) c.eta_s = study_detail(store, *o.study, o.runs_root, o.workers)["eta"]["seconds"].get<double>();
   return c;
+}
+
+double seconds_now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+ProgressTally progress_tally(Store& store, const SchedulerOptions& o) {
+  ProgressTally::Sources sources;
+  sources.count = [&store, &o] { return store_counts(store, o); };
+  // One study: the cost model scaled by measured times (sched/study_eta.h).
+  if (o.study)
+    sources.eta = [&store, &o]() -> std::optional<double> {
+      return study_detail(store, *o.study, o.runs_root, o.workers)["eta"]["seconds"].get<double>();
+    };
+  sources.now_s = seconds_now;
+  return ProgressTally(std::move(sources));
 }
 
 // A job's wall-clock limit: --timeout when given (0 = none), else the
@@ -140,17 +157,29 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     running.emplace(job.job_id, InFlight{job, job_label(store, job), job_memory_estimate_bytes(job.cells)});
   const BudgetPolicy policy{o.memory_budget_bytes, o.workers, std::max(1, o.workers)};
   HeadReservation reservation;
+  ProgressTally tally = progress_tally(store, o);
   auto record_updates = [&] {
     for (const auto& u : executor.take_updates()) store.set_queue_state(u.job_id, u.external_id, u.state, u.reason);
   };
 
+  // Reports of studies whose series finished, paced (sched/report_pacer.h):
+  // all pending ones, or only those whose pause is over.
+  ReportPacer pacer;
+  auto write_reports = [&](bool all_pending) {
+    for (long long id : pacer.pending(all_pending ? std::nullopt : std::optional<double>(seconds_now()))) {
+      const double started = seconds_now();
+      if (!refresh_report(store, id, o)) ++sum.reports_failed;
+      pacer.written(id, started, seconds_now());
+    }
+  };
   // Studies whose jobs were all done already (reused) finish right away.
   auto sweep = [&](const std::vector<long long>& studies) {
     for (long long id : studies) {
       const int n = finish_ready_series(store, id);
       sum.series_finished += n;
-      if (n > 0 && !refresh_report(store, id, o)) ++sum.reports_failed;
+      if (n > 0) pacer.series_finished(id);
     }
+    write_reports(false);
   };
   sweep(o.study ? std::vector<long long>{*o.study} : store.active_studies());
 
@@ -184,7 +213,8 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
         store.set_job_external_id(job->job_id, ext);
       executor.release(job->job_id);
       running.emplace(job->job_id, std::move(f));
-      if (o.progress) o.progress->update(counts(store, o));
+      tally.job_started();
+      if (o.progress) o.progress->update(tally.current());
     }
     executor.flush();
     record_updates();
@@ -198,6 +228,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
         others_working = !st.empty() && (st.front().running > 0 || st.front().queued > 0);
       }
       if (o.stop_when_idle && !others_working) break;
+      write_reports(true);
       const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.idle_poll_s);
       while (std::chrono::steady_clock::now() < until && !o.stop_requested())
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -217,6 +248,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     if (out.kind == OutcomeKind::kFinal) {
       if (store.record_result(f.job.job_id, o.owner, out.row)) remove_checkpoint(exit->run_dir);
       ++sum.finished;
+      tally.job_finished(out.row.status == "converged");
       if (out.row.status == "converged") {
         ++sum.converged;
         char buf[64];
@@ -229,19 +261,22 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     } else if (out.kind == OutcomeKind::kRetryable) {
       const bool requeued = store.record_retryable_failure(f.job.job_id, o.owner, out.row, o.max_attempts);
       if (requeued) {
+        tally.job_requeued();
         ++sum.retried;
         what += "will retry: " + out.row.reason;
       } else {
         remove_checkpoint(exit->run_dir);
+        tally.job_finished(false);
         ++sum.finished;
         ++sum.failed;
         what += "failed: " + out.row.reason;
       }
     } else {
       store.release(f.job.job_id, o.owner, out.row.reason);
+      tally.job_requeued();
       what += "released: " + out.row.reason;
     }
-    if (o.progress) o.progress->job_finished(what, counts(store, o));
+    if (o.progress) o.progress->job_finished(what, tally.current());
     sweep(o.study ? std::vector<long long>{*o.study} : studies_of_job(store, f.job.job_id));
   }
 
@@ -253,6 +288,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     }
     running.clear();
   }
+  if (!(o.study && o.stop_when_idle)) write_reports(true);  // `run` writes its final report itself
   if (o.progress) o.progress->finish();
   return sum;
 }

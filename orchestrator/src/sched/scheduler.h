@@ -37,7 +37,9 @@ struct SchedulerOptions {
   double idle_poll_s = 1.0;
   std::filesystem::path runs_root;  // <db>.runs
   std::string owner;                // claim owner (this_process_owner())
-  // Where a study's report goes (empty path = no report).
+  // Where a study's report goes (empty path = no report). Reports are
+  // rewritten as series finish, paced (sched/report_pacer.h); `run` (a
+  // study, stop_when_idle) writes the final one itself, after the loop.
   std::function<std::filesystem::path(const std::string& study_name)> report_dir;
   std::function<bool()> stop_requested = [] { return false; };
   Progress* progress = nullptr;

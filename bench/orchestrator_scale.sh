@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# The orchestrator's own cost per job as studies grow: `gridfree run` of a
+# study of K cases × 6 drag laws × the paper's 18 grids (108·K jobs) with a
+# worker that answers at once (tests/fixtures/fake_worker.sh through
+# GRIDFREE_WORKER), so what is measured is the orchestrator: claims,
+# records, progress, series extrapolations and reports.
+#
+#   bench/orchestrator_scale.sh BIN_DIR [K ...]     (default K: 1 10)
+#
+# Prints per size: jobs, wall s, jobs/s, the orchestrator's own CPU (user +
+# system of the `gridfree` process alone, read from /proc every 0.1 s, so
+# the fake workers' CPU is not counted) and that CPU per job in ms.
+# Run it beside nothing else (print `uptime` with the figures).
+set -euo pipefail
+if [[ $# -lt 1 ]]; then
+  echo "usage: $0 BIN_DIR [K ...]" >&2
+  exit 2
+fi
+bin=$(cd "$1" && pwd); shift
+sizes=("$@")
+[[ ${#sizes[@]} -gt 0 ]] || sizes=(1 10)
+here=$(cd "$(dirname "$0")/.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+tick=$(getconf CLK_TCK)
+
+study_of() {  # K → a study document on stdout
+  python3 - "$here/studies/quickstart.json" "$1" <<'EOF'
+import json, sys
+base = json.load(open(sys.argv[1]))
+k = int(sys.argv[2])
+case = base["cases"]["PC1"]
+doc = {
+    "schema": base["schema"],
+    "name": f"scale{k}",
+    "description": f"orchestrator scale benchmark: {k} cases x 6 drag laws x 18 grids",
+    "cases": {f"ok{i}": dict(case, particles={"generator": {"kind": "bursting_bubble", "seed": i + 1}}) for i in range(k)},
+    "factors": {"convection": ["superbee"], "fwhm_dp": [6], "drag": ["bvk", "gidaspow", "gidaspow_blend", "wen_yu", "hkl", "syamlal_obrien"]},
+    "design": "factorial",
+    "grids": {"delta_star": [3.3, 2.762, 2.311, 1.934, 1.619, 1.355, 1.134, 0.949, 0.794, 0.665,
+                             0.556, 0.466, 0.39, 0.326, 0.273, 0.228, 0.191, 0.16]},
+}
+print(json.dumps(doc, indent=1))
+EOF
+}
+
+printf '%8s %8s %8s %10s %12s\n' jobs wall_s jobs/s orch_cpu_s cpu_ms/job
+for k in "${sizes[@]}"; do
+  dir="$work/k$k"
+  mkdir -p "$dir"
+  study_of "$k" > "$dir/study.json"
+  jobs=$((108 * k))
+  start=$(date +%s.%N)
+  (cd "$dir" && GRIDFREE_WORKER="$here/tests/fixtures/fake_worker.sh" \
+     "$bin/gridfree" run study.json --db "$dir/db.sqlite" -j 2 > "$dir/run.log" 2>&1) &
+  runner=$!
+  pid=""
+  cpu=0
+  while kill -0 "$runner" 2>/dev/null; do
+    [[ -n "$pid" ]] || pid=$(pgrep -P "$runner" -x gridfree || true)
+    if [[ -n "$pid" && -r /proc/$pid/stat ]]; then
+      t=$(awk '{print $14 + $15}' "/proc/$pid/stat" 2>/dev/null || true)
+      [[ -z "$t" ]] || cpu=$t
+    fi
+    sleep 0.1
+  done
+  wait "$runner" || { echo "run of $jobs jobs failed: see below" >&2; tail -5 "$dir/run.log" >&2; exit 1; }
+  end=$(date +%s.%N)
+  awk -v j="$jobs" -v s="$start" -v e="$end" -v c="$cpu" -v t="$tick" 'BEGIN {
+    w = e - s; cs = c / t;
+    printf("%8d %8.1f %8.1f %10.1f %12.2f\n", j, w, j / w, cs, 1000 * cs / j) }'
+done

@@ -1,0 +1,47 @@
+// ProgressTally (sched/progress_tally.h).
+#include "sched/progress_tally.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace gridfree {
+
+ProgressTally::ProgressTally(Sources sources, double recount_s, double eta_s)
+    : sources_(std::move(sources)), recount_s_(recount_s), eta_s_(eta_s) {}
+
+void ProgressTally::recount(double now) {
+  const std::optional<double> eta = counts_.eta_s;
+  counts_ = sources_.count();
+  counts_.eta_s = eta;
+  counted_at_ = now;
+}
+
+void ProgressTally::reprice(double now) {
+  counts_.eta_s = sources_.eta ? sources_.eta() : std::nullopt;
+  priced_at_ = now;
+}
+
+ProgressCounts ProgressTally::current() {
+  const double now = sources_.now_s();
+  if (!counted_at_ || now - *counted_at_ >= recount_s_) recount(now);
+  if (!priced_at_ || now - *priced_at_ >= eta_s_) reprice(now);
+  return counts_;
+}
+
+ProgressCounts ProgressTally::exact() {
+  const double now = sources_.now_s();
+  recount(now);
+  reprice(now);
+  return counts_;
+}
+
+void ProgressTally::job_started() { ++counts_.running; }
+
+void ProgressTally::job_finished(bool converged) {
+  counts_.running = std::max(0, counts_.running - 1);
+  ++(converged ? counts_.done : counts_.failed);
+}
+
+void ProgressTally::job_requeued() { counts_.running = std::max(0, counts_.running - 1); }
+
+}  // namespace gridfree
