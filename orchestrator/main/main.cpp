@@ -32,15 +32,7 @@ int main(int argc, char** argv) {
     std::cout << version << '\n';
   });
   // A mistyped command: name it and the nearest known one (exit 2).
-  if (argc > 1 && argv[1][0] != '-') {
-    std::vector<std::string> names;
-    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-      names.push_back(sub->get_name());
-    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
-      std::cerr << "error: " << unknown_command_message(argv[1], names) << "\nRun with --help for more information.\n";
-      return to_int(ExitCode::kInvalidInput);
-    }
-  }
+  if (report_unknown_command(app, argc, argv)) return to_int(ExitCode::kInvalidInput);
 
   try {
     app.parse(argc, argv);
