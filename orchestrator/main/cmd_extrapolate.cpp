@@ -1,8 +1,10 @@
-// gridfree extrapolate SERIES.json|SERIES.csv [--method fm|eh14] [--p-range lo hi]
+// gridfree extrapolate SERIES.json|SERIES.csv [--method capped|fm|eh14] [--p-range lo hi] [--self-check]
 //
 // Applies the extrapolation of PHYSICS.md §8 to any series a user brings
 // ({"h": [...], "f": [...]} or a CSV with columns h,f) and prints the JSON of
-// docs/INTERFACE.md §4 (2-space indent) on stdout. Exit 0 on success, 2 on invalid
+// docs/INTERFACE.md §4 (2-space indent) on stdout. --self-check adds
+// "self_check": the coverage of U on the series' coarser windows
+// (extrap/self_check.h), its one-line summary also on stderr. Exit 0 on success, 2 on invalid
 // input (the message names the file position or JSON path and why).
 #include <iostream>
 #include <memory>
@@ -13,6 +15,7 @@
 #include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "extrap/extrapolation.h"
+#include "extrap/self_check.h"
 #include "extrap/series_io.h"
 
 namespace gridfree::cli {
@@ -20,8 +23,9 @@ namespace {
 
 struct ExtrapolateArgs {
   std::string series_file;
-  std::string method = "fm";
+  std::string method = "capped";
   std::vector<double> p_range;
+  bool self_check = false;
 };
 
 int run_extrapolate(const ExtrapolateArgs& args) {
@@ -35,7 +39,15 @@ int run_extrapolate(const ExtrapolateArgs& args) {
     validate_options(opts);
     const Series series = read_series_file(args.series_file);
     const ExtrapolationResult result = extrapolate(series, opts);
-    std::cout << to_ordered_json(result).dump(2) << '\n';
+    auto out = to_ordered_json(result);
+    if (args.self_check) {
+      const auto check = coverage_self_check(series.h, series.f, [&opts](const auto& h, const auto& f) {
+        return window_fit(extrapolate(Series{h, f}, opts));
+      });
+      out["self_check"] = to_ordered_json(check);
+      std::cerr << check.summary() << '\n';
+    }
+    std::cout << out.dump(2) << '\n';
     return to_int(ExitCode::kOk);
   } catch (const InputError& e) {
     std::cerr << "error: invalid input\n" << e.what() << '\n';
@@ -51,10 +63,15 @@ void add_extrapolate_command(CLI::App& app, int& exit_code) {
       "extrapolate", "Extrapolate a grid series to h -> 0 with uncertainties (docs/PHYSICS.md §8); prints JSON");
   sub->add_option("series", args->series_file, "SERIES.json ({\"h\": [...], \"f\": [...]}) or SERIES.csv (columns h,f)")
       ->required();
-  sub->add_option("--method", args->method, "fm (Fullmer & Musser 2018, default) or eh14 (Eca & Hoekstra 2014)")
-      ->check(CLI::IsMember({"fm", "eh14"}));
+  sub->add_option("--method", args->method,
+                  "capped (default: Fullmer & Musser 2018 with observed orders above the range capped), "
+                  "fm (Fullmer & Musser 2018 as published) or eh14 (Eca & Hoekstra 2014)")
+      ->check(CLI::IsMember({"capped", "fm", "eh14"}));
   sub->add_option("--p-range", args->p_range, "accepted observed orders lo hi (default 0.5 2.1)")
       ->expected(2);
+  sub->add_flag("--self-check", args->self_check,
+                "re-extrapolate every window of 4-8 consecutive coarser grids and report whether its U "
+                "covered the whole series' f0 (needs >= 6 grids)");
   sub->callback([args, &exit_code] { exit_code = run_extrapolate(*args); });
 }
 

@@ -23,6 +23,7 @@ void constant_result(const Series& s, ExtrapolationResult& out) {
   out.f0 = f0;
   out.sigma_re = 0.0;
   out.fs = 1.25;
+  out.u0 = 0.0;
   out.power = FitSummary{};
   out.power->f0 = f0;
   out.power->c = 0.0;
@@ -56,9 +57,10 @@ void validate_options(const ExtrapolationOptions& opts) {
 }
 
 ExtrapolationMethod parse_method(const std::string& name, const std::string& where) {
+  if (name == "capped") return ExtrapolationMethod::kCapped;
   if (name == "fm") return ExtrapolationMethod::kFm;
   if (name == "eh14") return ExtrapolationMethod::kEh14;
-  throw InputError(where, "unknown extrapolation method \"" + name + "\"; valid: fm, eh14");
+  throw InputError(where, "unknown extrapolation method \"" + name + "\"; valid: capped, fm, eh14");
 }
 
 ExtrapolationResult extrapolate(const std::vector<double>& h, const std::vector<double>& f,
@@ -90,6 +92,7 @@ void fit_series(const Series& s, const ExtrapolationOptions& opts, Extrapolation
     eh14_extrapolate(s, opts, out);
   else
     fm_extrapolate(s, opts, out);
+  if (out.f0 && out.sigma_re) out.u0 = extrapolated_value_uncertainty(*out.f0, s.f.front(), *out.sigma_re);
 }
 
 }  // namespace

@@ -86,6 +86,7 @@ nlohmann::ordered_json to_ordered_json(const ExtrapolationResult& r) {
   j["verdict"] = verdict_json(r.verdict);
   j["method"] = text(r.method);
   j["f0"] = num(r.f0);
+  j["u0"] = num(r.u0);
   j["p"] = num(r.p);
   j["sigma_re"] = num(r.sigma_re);
   j["data_range"] = num(r.data_range);
@@ -96,6 +97,9 @@ nlohmann::ordered_json to_ordered_json(const ExtrapolationResult& r) {
   ojson fits = ojson::object();
   fits["power"] = power_json(r.power.value_or(FitSummary{}));
   fits["mixed"] = fixed_json(r.mixed.value_or(FitSummary{}), true, true);
+  if (r.capped)
+    fits["capped"] = ojson{{"f0", num(r.capped->f0)}, {"p", num(r.capped->p)}, {"c", num(r.capped->c)},
+                           {"sigma", num(r.capped->sigma)}};
   if (r.first) fits["first"] = fixed_json(*r.first, true, false);
   if (r.second) fits["second"] = fixed_json(*r.second, false, true);
   j["fits"] = fits;

@@ -14,13 +14,16 @@
 namespace gridfree {
 
 enum class ExtrapolationMethod {
-  kFm,    // Fullmer & Musser (2018), PHYSICS.md §8 (default)
-  kEh14,  // Eça & Hoekstra (2014), full procedure
+  kCapped,  // FM with observed orders above p_high capped at p_high (default,
+            // docs/EXTRAPOLATION.md "Default procedure")
+  kFm,      // Fullmer & Musser (2018), PHYSICS.md §8, as published
+  kEh14,    // Eça & Hoekstra (2014), full procedure
 };
 
 struct ExtrapolationOptions {
-  ExtrapolationMethod method = ExtrapolationMethod::kFm;
-  // Accepted observed orders: FM uses the power law iff p_low ≤ p ≤ p_high;
+  ExtrapolationMethod method = ExtrapolationMethod::kCapped;
+  // Accepted observed orders: FM uses the power law iff p_low ≤ p ≤ p_high
+  // (capped: p > p_high → the fit f0 + c h^p_high);
   // EH14 uses Fs = 1.25 iff p_low ≤ p < p_high (and σ < Δφ).
   double p_low = 0.5, p_high = 2.1;
   Weighting weights = Weighting::kInverseH;  // FM fits (EH14 tries both)
@@ -51,7 +54,9 @@ struct ExtrapolationResult {
   std::string status = "ok";           // ok | insufficient_grids
   std::optional<std::string> method;   // power | mixed | constant | eh14_<fit>_<weighting>
   std::optional<double> f0, p, sigma_re, data_range, fs, sigma_over_range;
+  std::optional<double> u0;            // f0's own uncertainty (docs/EXTRAPOLATION.md "U₀")
   std::optional<FitSummary> power, mixed, first, second;  // first/second: EH14 only
+  std::optional<FitSummary> capped;    // capped only: f0 + c h^p_high when p > p_high
   std::vector<GridUncertainty> grids;  // h ascending
   std::vector<GciTriplet> gci;         // consecutive triplets, finest first
   std::optional<Eh14Branch> eh14;

@@ -28,7 +28,10 @@ std::optional<double> finest_u(const SeriesSummary& s) {
 
 std::string f0_label(const SeriesSummary& s) {
   const auto f0 = s.f0();
-  return f0 ? "f_{0} = " + format_to_uncertainty_digits(*f0, finest_u(s), 6) : std::string();
+  if (!f0) return {};
+  const std::optional<double> u0 = s.extrapolation ? s.extrapolation->u0 : std::nullopt;
+  if (!u0) return "f_{0} = " + format_to_uncertainty_digits(*f0, finest_u(s), 6);  // digits U₁ supports
+  return "f_{0} = " + format_with_uncertainty(*f0, u0, 6) + " (U_{0})";
 }
 
 std::string finest_label(const SeriesSummary& s) {

@@ -66,6 +66,7 @@ ExtrapolationView from_json(const json& j) {
   v.status = word(j, "status", "");
   v.method = word(j, "method", "");
   v.f0 = number(j, "f0", "");
+  v.u0 = number(j, "u0", "");
   v.p = number(j, "p", "");
   v.sigma_re = number(j, "sigma_re", "");
   v.data_range = number(j, "data_range", "");

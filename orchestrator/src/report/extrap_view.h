@@ -1,7 +1,7 @@
 // The report's view of one series' extrapolation, read from the JSON form
 // of the extrapolation result (docs/INTERFACE.md §4, `gridfree extrapolate`):
 //
-//   {"status", "method", "f0", "p", "sigma_re", "data_range", "fs",
+//   {"status", "method", "f0", "u0", "p", "sigma_re", "data_range", "fs",
 //    "fits": {"power": {f0, p, c, sigma, p_found}, "mixed": {f0, c1, c2, sigma}},
 //    "grids": [{h, f, fhat, u, rde}], "gci": [{h[3], p, f_ext, gci_fine, convergence, status}]}
 //
@@ -42,8 +42,9 @@ struct MixedFitView {
 
 struct ExtrapolationView {
   std::string status;                     // ok | insufficient_grids | (other words passed through)
-  std::string method;                     // power | mixed | constant
+  std::string method;                     // power | capped_power | mixed | constant | eh14_…
   std::optional<double> f0, p, sigma_re, data_range, fs;
+  std::optional<double> u0;               // f0's own uncertainty (docs/EXTRAPOLATION.md "U₀")
   PowerFitView power;
   MixedFitView mixed;
   std::vector<ExtrapolatedGrid> grids;    // h ascending

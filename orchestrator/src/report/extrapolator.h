@@ -16,7 +16,7 @@ using Extrapolator =
     std::function<nlohmann::json(const std::vector<double>& h, const std::vector<double>& f)>;
 
 struct ExtrapolatorSettings {
-  std::string method = "fm";        // fm (PHYSICS.md §8) | eh14
+  std::string method = "capped";    // capped (default) | fm (PHYSICS.md §8) | eh14
   double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
   std::string weights = "inverse_h"; // inverse_h | uniform (fm fits)
 };

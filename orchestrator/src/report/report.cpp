@@ -59,7 +59,8 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
   ReportContent content = build_report_content(data, extrapolate);
   ReportFiles files;
   for (const NamedTable* t : {&content.grids_table, &content.series_table, &content.differences_table,
-                              &content.cost_table, &content.gci_table, &content.failures_table}) {
+                              &content.cost_table, &content.gci_table, &content.failures_table,
+                              &content.coverage_table}) {
     files.csv.push_back(out_dir / t->file);
     write_file_atomically(files.csv.back(), to_csv(t->table));
   }

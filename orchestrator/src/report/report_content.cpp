@@ -37,6 +37,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.gci_table = {"gci.csv", "Classic three-grid Richardson extrapolation / GCI", gci_table(c.series)};
   c.grids_table = {"grids.csv", "Every grid", grids_table(c.series)};
   c.failures_table = {"failures.csv", "Failures", failures_table(c.series)};
+  c.coverage_table = {"coverage.csv", "Coverage self-check", coverage_table(c.series)};
   c.alignment = alignment_lines(data.alignment, c.series);
   c.alignment_table = {"alignment.csv", "Alignment check", alignment_table(c.alignment)};
   c.charts = report_charts(c.series);

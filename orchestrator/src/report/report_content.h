@@ -28,6 +28,7 @@ struct ReportContent {
   std::vector<SeriesSummary> series;
   std::vector<SeriesDifference> differences;
   NamedTable series_table, differences_table, cost_table, gci_table, grids_table, failures_table;
+  NamedTable coverage_table;               // the coverage self-check (series_coverage.h)
   std::vector<NamedChart> charts;
   std::vector<AlignmentLine> alignment;    // empty unless the study ran the alignment check
   NamedTable alignment_table;

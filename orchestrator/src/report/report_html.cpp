@@ -91,14 +91,15 @@ std::string contents(const ReportContent& c) {
   std::string out = "<nav class=\"toc\"><strong>Contents</strong>\n<ul>\n";
   for (const auto& [id, title] : std::vector<std::pair<std::string, std::string>>{
            {"verdicts", "Verdicts"}, {"series", c.series_table.title}, {"differences", c.differences_table.title},
-           {"cost", c.cost_table.title}, {"charts", "Charts"}, {"gci", c.gci_table.title}, {"failures", c.failures_table.title},
+           {"cost", c.cost_table.title}, {"coverage", c.coverage_table.title}, {"charts", "Charts"}, {"gci", c.gci_table.title}, {"failures", c.failures_table.title},
            {"grids", c.grids_table.title}})
     out += "<li><a href=\"#" + id + "\">" + xml_escape(title) + "</a></li>\n";
   if (!about_sections(c.data.generator_kinds).empty()) out += "<li><a href=\"#about\">About this case</a></li>\n";
   if (!c.alignment.empty()) out += "<li><a href=\"#alignment\">" + xml_escape(c.alignment_table.title) + "</a></li>\n";
   out += "</ul>\n<strong>Files</strong>\n<ul>\n";
   for (const NamedTable* t :
-       {&c.series_table, &c.differences_table, &c.cost_table, &c.gci_table, &c.failures_table, &c.grids_table})
+       {&c.series_table, &c.differences_table, &c.cost_table, &c.coverage_table, &c.gci_table, &c.failures_table,
+        &c.grids_table})
     out += "<li><a href=\"" + xml_escape(t->file) + "\">" + xml_escape(t->file) + "</a></li>\n";
   for (const auto& chart : c.charts) {
     out += "<li><a href=\"" + xml_escape(chart.file) + "\">" + xml_escape(chart.file) + "</a>";
@@ -140,6 +141,8 @@ std::string render_html(const ReportContent& c) {
   out += table_section(c.series_table, "series", "No series.");
   out += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
   out += table_section(c.cost_table, "cost", "No series has an extrapolation yet.");
+  out += table_section(c.coverage_table, "coverage",
+                       "No series checked yet: a series needs all its grids and at least 6 of them converged.");
   out += "<h2 id=\"charts\">Charts</h2>\n<div class=\"charts\">\n";
   for (const auto& chart : c.charts) {
     if (!per_series(chart)) out += figure(chart);

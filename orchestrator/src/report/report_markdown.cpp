@@ -52,6 +52,8 @@ std::string render_markdown(const ReportContent& c) {
   out += table_section(c.series_table, "No series.");
   out += table_section(c.differences_table, "No two series differ in exactly one factor.");
   out += table_section(c.cost_table, "No series has an extrapolation yet.");
+  out += table_section(c.coverage_table,
+                       "No series checked yet: a series needs all its grids and at least 6 of them converged.");
   out += "## Charts\n\n";
   if (!c.export_note.empty()) out += c.export_note + "\n\n";
   for (const auto& chart : c.charts) {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "extrap/verdict.h"
+#include "report/series_coverage.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -105,6 +106,7 @@ Table series_table(const std::vector<SeriesSummary>& series) {
   t.columns.push_back(num_col("pending", {}, true));
   t.columns.push_back(text_col("method"));
   t.columns.push_back(num_col("f0"));
+  t.columns.push_back(num_col("u0", "U0"));
   t.columns.push_back(num_col("p"));
   t.columns.push_back(num_col("c"));
   t.columns.push_back(num_col("c1"));
@@ -137,6 +139,7 @@ Table series_table(const std::vector<SeriesSummary>& series) {
     const ExtrapolationView& e = s.extrapolation ? *s.extrapolation : empty;
     row.push_back(text_cell(e.method));
     row.push_back(number_cell(s.f0(), 8));
+    row.push_back(number_cell(e.u0, 3));
     // p and c belong to the power law: shown only when it is the chosen fit
     // (the store keeps them NULL for a mixed fit; the rejected fit's values
     // stay in the CSV-only p_power and f0_power columns).
@@ -223,6 +226,31 @@ Table failures_table(const std::vector<SeriesSummary>& series) {
                         number_cell(g.dp_star, 7), text_cell(g.reason.empty() ? "(no reason recorded)" : g.reason),
                         text_cell(g.job_hash)});
     }
+  }
+  return t;
+}
+
+Table coverage_table(const std::vector<SeriesSummary>& series) {
+  Table t;
+  t.columns = {text_col("series"),
+               text_col("verdict"),
+               num_col("grids", "ng"),
+               num_col("reference", "f0 (all grids)"),
+               num_col("windows", "windows"),
+               num_col("covered_u1", "f1 ± U1 covers"),
+               num_col("covered_u0", "f0 ± U0 covers"),
+               num_col("coverage", "coverage (U1)"),
+               num_col("worst", "largest miss / U1"),
+               text_col("status"),
+               prose_col("missed", "windows that missed (Δ* coarse–fine)")};
+  for (const auto& s : series) {
+    if (!s.coverage) continue;
+    const CoverageCheck& c = *s.coverage;
+    const std::string status = c.status != "checked" ? c.status : (c.below_promise() ? "below promise" : "ok");
+    t.rows.push_back({text_cell(s.label), text_cell(s.verdict), integer_cell(static_cast<long long>(s.h.size())),
+                      number_cell(c.reference, 8), integer_cell(c.judged), integer_cell(c.covered),
+                      integer_cell(c.f0_covered), percent_cell(coverage_rate(c), 3),
+                      number_cell(worst_distance(c), 3), text_cell(status), text_cell(missed_windows(c))});
   }
   return t;
 }

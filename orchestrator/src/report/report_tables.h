@@ -6,6 +6,7 @@
 //   differences  one-factor pairs, 2|f0a − f0b|/|f0a + f0b|
 //   gci          classic three-grid GCI of every consecutive triplet, beside f0
 //   failures     grids that finished without a value, with the reason
+//   coverage     the coverage self-check per series (series_coverage.h)
 #pragma once
 
 #include <vector>
@@ -22,5 +23,6 @@ Table differences_table(const std::vector<SeriesSummary>& series,
                         const std::vector<SeriesDifference>& differences);
 Table gci_table(const std::vector<SeriesSummary>& series);
 Table failures_table(const std::vector<SeriesSummary>& series);
+Table coverage_table(const std::vector<SeriesSummary>& series);
 
 }  // namespace gridfree

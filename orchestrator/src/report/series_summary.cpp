@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "extrap/verdict.h"
+#include "report/series_coverage.h"
 
 namespace gridfree {
 
@@ -99,6 +100,7 @@ std::vector<SeriesSummary> summarize_series(const StudyReportData& data, const E
       s.verdict_reasons = v.reasons;
     }
     if (s.incomplete) s.verdict_reasons.insert(s.verdict_reasons.begin(), "provisional: grids are still pending");
+    s.coverage = series_coverage(s, extrapolate);
     out.push_back(std::move(s));
   }
   return out;

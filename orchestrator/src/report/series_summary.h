@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "extrap/self_check.h"
 #include "report/extrap_view.h"
 #include "report/extrapolator.h"
 #include "report/report_data.h"
@@ -34,6 +35,7 @@ struct SeriesSummary {
   // extrapolation) insufficient_grids / unreliable from the converged count.
   std::string verdict;
   std::vector<std::string> verdict_reasons;
+  std::optional<CoverageCheck> coverage;  // the coverage self-check, once made (series_coverage.h)
 
   int converged() const { return static_cast<int>(h.size()); }
   bool insufficient() const { return converged() < kMinGridsForUncertainty; }

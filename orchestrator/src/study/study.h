@@ -55,7 +55,7 @@ struct StudyCase {
 struct ExtrapolationSettings {
   std::string weights = "inverse_h";
   double p_low = 0.5, p_high = 2.1;
-  std::string method = "fm";  // fm | eh14
+  std::string method = "capped";  // capped | fm | eh14
 };
 
 // The alignment check of a study (study_alignment.h): which grids are

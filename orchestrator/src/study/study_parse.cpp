@@ -282,8 +282,8 @@ void parse_extrapolation(const json& doc, Study& s, ProblemList& problems) {
       s.extrapolation.weights = w->get<std::string>();
   }
   if (auto m = e->find("method"); m != e->end()) {
-    if (!m->is_string() || (*m != "fm" && *m != "eh14"))
-      problems.add_once("/extrapolation/method", "must be \"fm\" or \"eh14\"");
+    if (!m->is_string() || (*m != "capped" && *m != "fm" && *m != "eh14"))
+      problems.add_once("/extrapolation/method", "must be \"capped\", \"fm\" or \"eh14\"");
     else
       s.extrapolation.method = m->get<std::string>();
   }

@@ -1,5 +1,5 @@
 // The default (Fullmer & Musser 2018, PHYSICS.md §8) procedure through the
-// public API extrapolate(h, f, opts): method choice, σ_RE, Fs, U and RDE
+// public API extrapolate(h, f, opts) with --method fm: method choice, σ_RE, Fs, U and RDE
 // recomputed independently from the reported fits, invariances, and the
 // special cases (constant data, fewer than 4 grids).
 #include <algorithm>
@@ -48,7 +48,7 @@ void expect_fm_uncertainties_consistent(const std::vector<double>& h_in, const E
 TEST(ExtrapFm, PowerLawInRangeIsChosen) {
   for (double p : {0.7, 1.0, 1.9}) {
     const auto h = test::default_h();
-    const auto r = extrapolate(h, test::power_law(h, 1158.8, -0.45, p));
+    const auto r = test::extrapolate_fm(h, test::power_law(h, 1158.8, -0.45, p));
     EXPECT_EQ(r.status, "ok");
     EXPECT_EQ(*r.method, "power") << "p = " << p;
     expect_rel(*r.f0, 1158.8, 1e-10);
@@ -65,7 +65,7 @@ TEST(ExtrapFm, PowerLawInRangeIsChosen) {
 TEST(ExtrapFm, OrdersOutsideTheRangeFallToMixed) {
   for (double p : {3.0, -0.5, 0.3}) {
     const auto h = test::default_h();
-    const auto r = extrapolate(h, test::power_law(h, 1158.8, 0.2, p));
+    const auto r = test::extrapolate_fm(h, test::power_law(h, 1158.8, 0.2, p));
     EXPECT_EQ(*r.method, "mixed") << "p = " << p;
     expect_rel(*r.power->p, p, 1e-10);  // the power fit itself is still exact
     expect_rel(*r.power->f0, 1158.8, 1e-10);
@@ -79,14 +79,14 @@ TEST(ExtrapFm, PRangeOptionMovesTheBoundary) {
   const auto f = test::power_law(h, 10.0, 1.0, 3.0);
   ExtrapolationOptions opts;
   opts.p_high = 3.5;
-  EXPECT_EQ(*extrapolate(h, f, opts).method, "power");
+  EXPECT_EQ(*test::extrapolate_fm(h, f, opts).method, "power");
   opts.p_low = 3.2;
-  EXPECT_EQ(*extrapolate(h, f, opts).method, "mixed");
+  EXPECT_EQ(*test::extrapolate_fm(h, f, opts).method, "mixed");
 }
 
 TEST(ExtrapFm, ExactMixedDataGiveBackCoefficients) {
   const auto h = test::default_h();
-  const auto r = extrapolate(h, test::mixed_law(h, 1158.8, 0.31, -0.052));
+  const auto r = test::extrapolate_fm(h, test::mixed_law(h, 1158.8, 0.31, -0.052));
   expect_rel(*r.mixed->f0, 1158.8, 1e-10);
   expect_rel(*r.mixed->c1, 0.31, 1e-10);
   expect_rel(*r.mixed->c2, -0.052, 1e-10);
@@ -95,7 +95,7 @@ TEST(ExtrapFm, ExactMixedDataGiveBackCoefficients) {
 
 TEST(ExtrapFm, UncertaintiesFollowPhysicsSection8) {
   const auto h = test::oscillatory_h();
-  const auto r = extrapolate(h, test::oscillatory_f(h));
+  const auto r = test::extrapolate_fm(h, test::oscillatory_f(h));
   expect_fm_uncertainties_consistent(h, r);
   // The chosen fit's own σ is the σ_RE.
   EXPECT_EQ(*r.sigma_re, *r.method == "power" ? *r.power->sigma : *r.mixed->sigma);
@@ -107,7 +107,7 @@ TEST(ExtrapFm, InvariantUnderScalingOfH) {
   const auto f = test::oscillatory_f(h);
   std::vector<double> hk;
   for (double hi : h) hk.push_back(1000 * hi);
-  const auto a = extrapolate(h, f), b = extrapolate(hk, f);
+  const auto a = test::extrapolate_fm(h, f), b = test::extrapolate_fm(hk, f);
   EXPECT_EQ(*a.method, *b.method);
   expect_rel(*b.f0, *a.f0, 1e-12);
   expect_rel(*b.power->p, *a.power->p, 1e-9);
@@ -126,7 +126,7 @@ TEST(ExtrapFm, InvariantUnderInputOrder) {
   std::shuffle(idx.begin(), idx.end(), std::mt19937(42));
   std::vector<double> hs, fs;
   for (auto i : idx) hs.push_back(h[i]), fs.push_back(f[i]);
-  const auto a = extrapolate(h, f), b = extrapolate(hs, fs);
+  const auto a = test::extrapolate_fm(h, f), b = test::extrapolate_fm(hs, fs);
   EXPECT_EQ(*a.f0, *b.f0);
   EXPECT_EQ(*a.power->p, *b.power->p);
   for (std::size_t i = 0; i < h.size(); ++i) {
@@ -136,7 +136,7 @@ TEST(ExtrapFm, InvariantUnderInputOrder) {
 }
 
 TEST(ExtrapFm, ConstantDataHaveZeroUncertainty) {
-  const auto r = extrapolate({0.5, 1, 2, 4, 8}, {3.25, 3.25, 3.25, 3.25, 3.25});
+  const auto r = test::extrapolate_fm({0.5, 1, 2, 4, 8}, {3.25, 3.25, 3.25, 3.25, 3.25});
   EXPECT_EQ(r.status, "ok");
   EXPECT_EQ(*r.method, "constant");
   EXPECT_EQ(*r.f0, 3.25);
@@ -150,7 +150,7 @@ TEST(ExtrapFm, ConstantDataHaveZeroUncertainty) {
 }
 
 TEST(ExtrapFm, ThreeGridsAreInsufficientButGciIsComputed) {
-  const auto r = extrapolate({1, 2, 4}, {1.1, 1.4, 2.6});
+  const auto r = test::extrapolate_fm({1, 2, 4}, {1.1, 1.4, 2.6});
   EXPECT_EQ(r.status, "insufficient_grids");
   EXPECT_FALSE(r.method.has_value());
   EXPECT_FALSE(r.f0.has_value());
@@ -162,7 +162,7 @@ TEST(ExtrapFm, ThreeGridsAreInsufficientButGciIsComputed) {
   // r = 2, ε32/ε21 = 1.2/0.3 = 4: p = 2, φ_ext = (4·1.1 − 1.4)/3 = 1.0.
   EXPECT_NEAR(*r.gci[0].p, 2.0, 1e-12);
   EXPECT_NEAR(*r.gci[0].f_ext, 1.0, 1e-12);
-  EXPECT_EQ(extrapolate({1, 2}, {1, 2}).gci.size(), 0u);
+  EXPECT_EQ(test::extrapolate_fm({1, 2}, {1, 2}).gci.size(), 0u);
 }
 
 TEST(ExtrapFm, SigmaOverRangeFlagsAPoorFit) {
@@ -170,7 +170,7 @@ TEST(ExtrapFm, SigmaOverRangeFlagsAPoorFit) {
   const auto h = test::default_h();
   std::vector<double> f;
   for (std::size_t i = 0; i < h.size(); ++i) f.push_back(i % 2 ? 1.0 : -1.0);
-  const auto r = extrapolate(h, f);
+  const auto r = test::extrapolate_fm(h, f);
   EXPECT_GT(*r.sigma_over_range, 1.0);
   EXPECT_GT(*r.fs, 1.25);
   expect_fm_uncertainties_consistent(h, r);

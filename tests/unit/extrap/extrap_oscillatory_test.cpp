@@ -34,7 +34,7 @@ TEST(ExtrapOscillatory, SeriesLooksLikeThePapers) {
 
 TEST(ExtrapOscillatory, RegressionIsStableWhereGciScatters) {
   const auto h = test::oscillatory_h();
-  const auto r = extrapolate(h, test::oscillatory_f(h));
+  const auto r = test::extrapolate_fm(h, test::oscillatory_f(h));
   ASSERT_EQ(r.status, "ok");
 
   // The least-squares value is within its own uncertainty of the exact value.
@@ -60,7 +60,7 @@ TEST(ExtrapOscillatory, PinnedValues) {
   // written (checked by hand for consistency: U, σ, Fs are verified against
   // PHYSICS.md §8 in extrap_fm_test); any change to the procedure shows here.
   const auto h = test::oscillatory_h();
-  const auto r = extrapolate(h, test::oscillatory_f(h));
+  const auto r = test::extrapolate_fm(h, test::oscillatory_f(h));
   // The power law's best order (≈ 6.63) is outside [0.5, 2.1]: mixed fit.
   EXPECT_EQ(*r.method, "mixed");
   EXPECT_NEAR(*r.power->p, 6.634817633891972, 1e-7 * 6.63);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "extrap/extrapolation.h"
+
 namespace gridfree::test {
 
 // n cell sizes geometrically spaced from h_fine to h_coarse (ascending).
@@ -36,6 +38,14 @@ inline std::vector<double> oscillatory_f(const std::vector<double>& h) {
   std::vector<double> f;
   for (double hi : h) f.push_back(1158.8 + 0.4 * hi * std::sin(7.0 / hi));
   return f;
+}
+
+// The paper's procedure as published (--method fm). The default, capped,
+// differs from it only when the observed order exceeds p_high.
+inline ExtrapolationResult extrapolate_fm(const std::vector<double>& h, const std::vector<double>& f,
+                                          ExtrapolationOptions opts = {}) {
+  opts.method = ExtrapolationMethod::kFm;
+  return extrapolate(h, f, opts);
 }
 
 }  // namespace gridfree::test

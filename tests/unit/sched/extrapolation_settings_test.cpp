@@ -38,7 +38,7 @@ TEST(ExtrapolationSettings, ReadFromTheStoredStudy) {
   d.definition = {{"name", "defaults"}};
   const ExtrapolatorSettings def = study_extrapolation_settings(store, store.submit(d, ExpandedStudy{}).study_id);
   EXPECT_EQ(def.weights, "inverse_h");
-  EXPECT_EQ(def.method, "fm");
+  EXPECT_EQ(def.method, "capped");
 }
 
 TEST(ExtrapolationSettings, WeightsChangeTheFit) {

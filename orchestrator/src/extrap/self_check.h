@@ -1,0 +1,84 @@
+// Coverage self-check (docs/EXTRAPOLATION.md "Coverage self-check"): does
+// the uncertainty a procedure prints cover the answer the same procedure
+// gives once more grids are added? Measured on the user's own series.
+//
+// For a series of n ≥ 6 grids (h ascending, finest first), the reference is
+// f0 of all n grids. Every window of 4 ≤ m ≤ 8 consecutive grids among the
+// n − 1 coarser ones (h_2 … h_n; the window sizes the promised rate was
+// measured on) is extrapolated with the same settings; a window
+// that prints an uncertainty is
+//
+//   covered   when |f0_ref − f_1w| ≤ U_1w   (the window's finest grid, f₁ ± U₁)
+//   f0 covered when |f0_ref − f0_w| ≤ U0_w   (the window's f0 ± U₀)
+//
+// and its distance |f0_ref − f_1w| / U_1w is kept (≤ 1 covered). Coverage is
+// k of n judged windows; below `promised` (the rate the procedure was
+// measured to reach, docs/EXTRAPOLATION.md) it is a warning. The windows
+// share grids, so k/n is not a binomial rate: one pre-asymptotic stretch of
+// coarse grids can account for several misses.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "extrap/result.h"
+
+namespace gridfree {
+
+// What the check needs of one extrapolation.
+struct WindowFit {
+  std::string verdict;                   // converged | pre-asymptotic | unreliable | insufficient_grids
+  std::optional<double> f0, u0, f1, u1;  // u1: the finest grid's U; u0: f0's own uncertainty
+};
+
+using WindowExtrapolator = std::function<WindowFit(const std::vector<double>& h, const std::vector<double>& f)>;
+
+struct CoverageWindow {
+  std::size_t first = 0, count = 0;  // grids first … first + count − 1 of the series (0 = finest)
+  double h_fine = 0, h_coarse = 0;
+  WindowFit fit;
+  std::optional<double> distance;    // |f0_ref − f_1w| / U_1w
+  std::optional<bool> covered, f0_covered;  // empty when the window prints no U
+};
+
+struct CoverageRules {
+  std::size_t min_series = 6;  // grids a series needs for the check
+  std::size_t min_window = 4;  // grids per window (the fit's minimum)
+  std::size_t max_window = 8;  // the largest window the promise was measured on
+  double promised = 0.95;      // coverage the procedure was measured to reach
+};
+
+struct CoverageCheck {
+  std::string status;                 // checked | too_few_grids | no_reference
+  std::optional<double> reference;    // f0 of the whole series
+  std::string reference_verdict;
+  std::vector<CoverageWindow> windows;
+  int judged = 0, covered = 0, f0_covered = 0;
+  double promised = 0.95;
+
+  // The one-line summary: "U₁ covered the answer in k of n coarser windows …".
+  std::string summary() const;
+  // True when judged windows exist and covered/judged < promised.
+  bool below_promise() const;
+};
+
+// h ascending (finest first), as make_series returns it. `extrapolate` is
+// called once for the whole series and once per window.
+CoverageCheck coverage_self_check(const std::vector<double>& h, const std::vector<double>& f,
+                                  const WindowExtrapolator& extrapolate, const CoverageRules& rules = {});
+
+// The numbers the check needs from a library extrapolation.
+WindowFit window_fit(const ExtrapolationResult& r);
+
+// JSON of docs/INTERFACE.md §4 "self_check": status, reference,
+// reference_verdict, judged, covered, f0_covered, promised, below_promise,
+// summary and windows[{h_fine, h_coarse, n_grids, verdict, f0, u0, f1, u1,
+// distance, covered, f0_covered}] (null where not computed).
+nlohmann::ordered_json to_ordered_json(const CoverageCheck& check);
+
+}  // namespace gridfree

@@ -1,0 +1,88 @@
+// Coverage self-check in the report (see series_coverage.h).
+#include "report/series_coverage.h"
+
+#include <algorithm>
+#include <exception>
+
+#include <spdlog/spdlog.h>
+
+#include "report/series_summary.h"
+#include "report/text_format.h"
+
+namespace gridfree {
+
+WindowFit window_fit(const ExtrapolationView& view) {
+  WindowFit fit;
+  fit.verdict = view.verdict;
+  fit.f0 = view.f0;
+  fit.u0 = view.u0;
+  if (!view.grids.empty()) {
+    fit.f1 = view.grids.front().f;
+    fit.u1 = view.grids.front().u;
+  }
+  return fit;
+}
+
+std::optional<CoverageCheck> series_coverage(const SeriesSummary& s, const Extrapolator& extrapolate) {
+  const CoverageRules rules;
+  if (s.incomplete || !s.extrapolation || !extrapolate || s.h.size() < rules.min_series) return std::nullopt;
+  const WindowFit whole = window_fit(*s.extrapolation);
+  try {
+    return coverage_self_check(s.h, s.f, [&](const std::vector<double>& h, const std::vector<double>& f) {
+      return h.size() == s.h.size() ? whole : window_fit(from_json(extrapolate(h, f)));
+    }, rules);
+  } catch (const std::exception& e) {
+    spdlog::warn("report: coverage self-check of series {} failed: {}", s.label, e.what());
+    return std::nullopt;
+  }
+}
+
+std::string missed_windows(const CoverageCheck& c) {
+  std::string out;
+  for (auto it = c.windows.rbegin(); it != c.windows.rend(); ++it) {
+    if (!it->covered || *it->covered) continue;
+    if (!out.empty()) out += "; ";
+    out += "Δ* " + format_g(it->h_coarse, 3) + "–" + format_g(it->h_fine, 3);
+    if (it->distance) out += " (" + format_g(*it->distance, 2) + " U₁)";
+  }
+  return out;
+}
+
+std::optional<double> worst_distance(const CoverageCheck& c) {
+  std::optional<double> worst;
+  for (const auto& w : c.windows)
+    if (w.distance) worst = std::max(worst.value_or(0.0), *w.distance);
+  return worst;
+}
+
+std::optional<double> coverage_rate(const CoverageCheck& c) {
+  if (c.judged == 0) return std::nullopt;
+  return static_cast<double>(c.covered) / c.judged;
+}
+
+std::string coverage_summary(const std::vector<SeriesSummary>& series) {
+  int checked = 0, judged = 0, covered = 0, below = 0;
+  for (const auto& s : series) {
+    if (!s.coverage || s.coverage->judged == 0) continue;
+    ++checked;
+    judged += s.coverage->judged;
+    covered += s.coverage->covered;
+    below += s.coverage->below_promise() ? 1 : 0;
+  }
+  if (checked == 0) return "not yet made (a series needs all its grids and at least 6 of them converged)";
+  return "U₁ covered the full series' f0 in " + std::to_string(covered) + " of " + std::to_string(judged) +
+         " coarser windows of " + std::to_string(checked) + " series; " + std::to_string(below) +
+         " series below 95 %";
+}
+
+std::vector<std::string> coverage_warnings(const std::vector<SeriesSummary>& series) {
+  std::vector<std::string> out;
+  for (const auto& s : series) {
+    if (!s.coverage || !s.coverage->below_promise()) continue;
+    out.push_back(s.label + ": " + s.coverage->summary() + "; missed: " + missed_windows(*s.coverage) +
+                  ". Its U may be too narrow on coarse grids: look at the coverage table before trusting it.");
+  }
+  return out;
+}
+
+}  // namespace gridfree
