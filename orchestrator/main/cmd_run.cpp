@@ -75,10 +75,13 @@ int run_study(const RunOptions& ro) {
   const ExpandedStudy ex = expand(study);
   auto options = scheduler_options(ro.db, ro.jobs, ro.timeout_s, ro.out);
   apply_memory_budget(options, ro.executor, ro.memory_budget);
+  // A study's slurm block (checked by parse_study) applies to --executor
+  // slurm; a local run ignores it, so one file serves both.
   const bool has_slurm = study.definition.is_object() && study.definition.contains("slurm");
   if (has_slurm && ro.executor.kind != "slurm")
-    throw InputError("/slurm", "Slurm settings need --executor slurm");
-  auto executor = make_executor(ro.executor, ro.db, ro.jobs, options, has_slurm ? &study.definition["slurm"] : nullptr);
+    spdlog::info("the study's \"slurm\" settings apply to --executor slurm only; this local run ignores them");
+  auto executor = make_executor(ro.executor, ro.db, ro.jobs, options,
+                                has_slurm && ro.executor.kind == "slurm" ? &study.definition["slurm"] : nullptr);
   // 2. Submit (or resume).
   Store store(ro.db, true);
   const SubmitResult sub = submit_study(store, study, ex, ro.replace);
@@ -88,10 +91,15 @@ int run_study(const RunOptions& ro) {
   StopSignals signals;
   Progress progress(isatty(STDERR_FILENO) != 0);
   options.study = sub.study_id;
-  options.stop_requested = [&signals] { return signals.requested(); };
+  // A fatal executor error (sbatch refused a submission for good) stops the
+  // loop like a signal: the jobs in flight are requeued, no attempt spent.
+  options.stop_requested = [&signals, &executor] { return signals.requested() || executor->fatal_error(); };
   options.progress = &progress;
   const SchedulerSummary sum = run_scheduler(store, *executor, options, adopted);
   progress.finish();
+  if (const auto fatal = executor->fatal_error())
+    throw InputError("--executor", *fatal + "; nothing more was submitted, the study's jobs are queued again (no "
+                                            "attempt spent): fix the cause and run again");
   // 4. Report and exit code.
   finish_ready_series(store, sub.study_id);
   const bool report_ok = refresh_report(store, sub.study_id, options) && sum.reports_failed == 0;
@@ -166,18 +174,20 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
   sub->callback([=, &exit_code] {
     // A daemon runs for days: every log line carries its time.
     spdlog::set_pattern("[%Y-%m-%d %H:%M:%S] %^[%l]%$ %v");
-    // A mistyped --db would wait forever on an empty new database.
-    const auto store_ptr = open_existing_store(*db);
-    Store& store = *store_ptr;
+    // The executor first: a missing Slurm command is refused before the
+    // database is opened. A mistyped --db would wait forever on an empty
+    // new database.
     auto options = scheduler_options(*db, *jobs, *timeout, {});
     apply_memory_budget(options, *executor_flags, *memory_budget);
     auto executor = make_executor(*executor_flags, *db, *jobs, options);
+    const auto store_ptr = open_existing_store(*db);
+    Store& store = *store_ptr;
     const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
     recover_stale_jobs(store);
     StopSignals signals;
     Progress progress(false);
     options.stop_when_idle = false;
-    options.stop_requested = [&signals] { return signals.requested(); };
+    options.stop_requested = [&signals, &executor] { return signals.requested() || executor->fatal_error(); };
     options.progress = &progress;
     spdlog::info("daemon: working {} with {} job(s) at a time (SIGINT/SIGTERM stops)", *db, *jobs);
     const SchedulerSummary sum = run_scheduler(store, *executor, options, adopted);
@@ -187,6 +197,8 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
     else
       spdlog::info("daemon: stopped; {} job(s) finished this session", sum.finished);
     if (sum.reports_failed > 0) spdlog::error("daemon: {} report(s) could not be written", sum.reports_failed);
+    if (const auto fatal = executor->fatal_error())
+      throw InputError("--executor", *fatal + "; the jobs in flight are queued again (no attempt spent)");
     exit_code = to_int(sum.reports_failed > 0 ? ExitCode::kInternalError : ExitCode::kOk);
   });
 }

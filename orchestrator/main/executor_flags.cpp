@@ -3,6 +3,7 @@
 
 #include "core/input_error.h"
 #include "exec/local_executor.h"
+#include "exec/program_path.h"
 #include "exec/slurm_executor.h"
 #include "exec/worker_path.h"
 
@@ -55,7 +56,8 @@ std::string first_slurm_flag(const ExecutorFlags& f) {
 }  // namespace
 
 std::unique_ptr<Executor> make_executor(const ExecutorFlags& f, const std::string& db, int jobs,
-                                        SchedulerOptions& options, const nlohmann::json* study_slurm) {
+                                        SchedulerOptions& options, const nlohmann::json* study_slurm,
+                                        const EnvLookup& env) {
   const auto worker = default_worker_path();
   if (f.kind == "local") {
     if (const auto flag = first_slurm_flag(f); !flag.empty()) throw InputError(flag, "only with --executor slurm");
@@ -70,7 +72,19 @@ std::unique_ptr<Executor> make_executor(const ExecutorFlags& f, const std::strin
   SlurmSettings flags = f.slurm;
   if (f.margin != 0) flags.margin = f.margin;
   s = merge(s, flags);
+  s.environment = sbatch_environment(env);  // below every setting, above the computed defaults
   validate(s);
+  // A missing Slurm command is a configuration error: refused (after the
+  // settings, which need no cluster) before the database is opened, so no
+  // job is claimed, submitted or failed.
+  const std::string path = env("PATH").value_or("");
+  if (const auto missing = missing_programs(kSlurmRequiredPrograms, path); !missing.empty()) {
+    std::string names;
+    for (const auto& m : missing) names += (names.empty() ? "'" : ", '") + m + "'";
+    throw InputError("--executor", "slurm needs " + names + " on PATH, which does not have " +
+                                       (missing.size() == 1 ? "it" : "them") + " (PATH=" + path +
+                                       "); load the cluster's Slurm module or fix PATH");
+  }
   auto runs = s.runs_dir.empty() ? runs_root_for(db) : std::filesystem::absolute(s.runs_dir);
   options.runs_root = runs;
   options.workers = s.max_queued.value_or(1000);

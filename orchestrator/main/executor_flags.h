@@ -27,7 +27,10 @@ void add_executor_flags(CLI::App* sub, ExecutorFlags& flags);
 // jobs in flight = max_queued, -j = tasks running at once (the array
 // throttle), threads = cpus per task, run folders in runs_dir if given.
 // `study_slurm`: the study's "slurm" object, or null (profile < study < flags).
+// `env`: where PATH (the Slurm commands must be on it, else InputError) and
+// the SBATCH_* input variables (SlurmSettings::environment) are read.
 std::unique_ptr<Executor> make_executor(const ExecutorFlags& flags, const std::string& db, int jobs,
-                                        SchedulerOptions& options, const nlohmann::json* study_slurm = nullptr);
+                                        SchedulerOptions& options, const nlohmann::json* study_slurm = nullptr,
+                                        const EnvLookup& env = process_environment());
 
 }  // namespace gridfree::cli

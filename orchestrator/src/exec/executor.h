@@ -35,8 +35,8 @@ struct JobUpdate {
 };
 
 struct JobExit {
-  // kRefused: the cluster will not run it (bad partition, a limit the job
-  // exceeds): final. kVanished: gone without a trace while nobody watched
+  // kRefused: the cluster will never start it (a pending Reason such as
+  // PartitionTimeLimit: a limit the job exceeds): final. kVanished: gone without a trace while nobody watched
   // (adopted after a restart): run again without spending an attempt.
   enum class How { kExited, kSignaled, kTimedOut, kKilled, kLaunchFailed, kLost, kRefused, kVanished };
   long long job_id = 0;
@@ -73,6 +73,11 @@ class Executor {
   // Takes over a job started by an earlier process from its external id;
   // false when this executor cannot (then the job is requeued).
   virtual bool adopt(const JobLaunch& /*job*/, const std::string& /*external_id*/) { return false; }
+  // Set when the executor can run nothing more (sbatch refused a submission
+  // for a reason no retry changes): the caller stops the loop, which
+  // requeues the jobs in flight without spending an attempt, and exits 2
+  // with this message.
+  virtual std::optional<std::string> fatal_error() const { return std::nullopt; }
 };
 
 // The worker command line (docs/INTERFACE.md §2) for a run directory:

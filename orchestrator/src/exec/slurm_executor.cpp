@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -14,6 +16,7 @@
 #include "exec/slurm_faults.h"
 #include "exec/slurm_queue.h"
 #include "exec/worker_progress.h"
+#include "study/slurm_block.h"
 #include "study/study_plan.h"
 
 namespace gridfree {
@@ -25,6 +28,18 @@ constexpr double kMaxBackoffS = 60.0;                // transient submit faults
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+template <class Groups>
+std::size_t unsent_count(const Groups& groups) {
+  std::size_t n = 0;
+  for (const auto& g : groups) n += g.second.size();
+  return n;
+}
+
+std::string path_text() {
+  const char* p = std::getenv("PATH");
+  return p == nullptr ? "(unset)" : p;
 }
 
 // Rounds up to 1, 2, 4, 8 ...: limits within a factor 2 share an array.
@@ -49,22 +64,49 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
   a.cpus = settings_.cpus_per_task.value_or(a.threads);
   a.throttle = slots_;
   const bool sized = job.cells[0] > 0 && job.cells[1] > 0 && job.cells[2] > 0;
-  if (settings_.time_minutes)
+  char margin_text[48];
+  std::snprintf(margin_text, sizeof margin_text, "%g", settings_.margin);
+  const std::string margin = std::string("computed from the cost model x ") + margin_text;
+  // The user's own time limit wins (docs/ORCHESTRATOR.md "Time and memory"):
+  // sbatch_args (after ours on sbatch's command line), the settings, then
+  // SBATCH_TIMELIMIT, which sbatch reads only when gridfree passes no --time.
+  const SbatchEnvironment& env = settings_.environment;
+  std::optional<double> limit_minutes;  // the limit in effect, when known
+  if (sbatch_words_set_time(settings_.sbatch_args)) {
+    a.time_from = "from --sbatch-arg";
+  } else if (settings_.time_minutes) {
     a.time_minutes = static_cast<long>(std::ceil(*settings_.time_minutes));
-  else if (job.timeout_s > 0)  // Slurm's limit one minute past ours, so ours is the one that fires
+    a.time_from = "from the settings (--time / time_minutes)";
+  } else if (env.time) {
+    a.time_from = "from " + env.time->name;
+    limit_minutes = slurm_time_minutes(env.time->value);
+    a.time_shown = limit_minutes ? slurm_time_text(*limit_minutes) : env.time->value;
+  } else if (job.timeout_s > 0) {  // Slurm's limit one minute past ours, so ours is the one that fires
     a.time_minutes = static_cast<long>(std::ceil(job.timeout_s / 60.0)) + 1;
-  else if (sized)
+    a.time_from = "from the job timeout + 1 min";
+  } else if (sized) {
     a.time_minutes = ladder(std::max(5.0, settings_.margin * estimated_seconds(job.cells, a.cpus) / 60.0));
+    a.time_from = margin;
+  }
+  if (a.time_minutes > 0) limit_minutes = static_cast<double>(a.time_minutes);
   // An earlier attempt's progress file: its longest outer iteration widens
   // the lead (worker_progress.h), in whole minutes so that arrays still
   // form, and to at most half the time limit so the job still gets to work.
   double lead = std::ceil(stop_grace_for_run(job.run_dir, kSlurmStopLeadSeconds) / 60.0) * 60.0;
-  if (a.time_minutes > 0) lead = std::min(lead, std::max<double>(kSlurmStopLeadSeconds, 30.0 * a.time_minutes));
+  if (limit_minutes) lead = std::min(lead, std::max<double>(kSlurmStopLeadSeconds, 30.0 * *limit_minutes));
   a.stop_lead_s = static_cast<int>(lead);
-  if (settings_.mem_mb)
+  if (sbatch_words_set_memory(settings_.sbatch_args)) {
+    a.mem_from = "from --sbatch-arg";
+  } else if (settings_.mem_mb) {
     a.mem_mb = static_cast<long>(std::ceil(*settings_.mem_mb));
-  else if (sized)
+    a.mem_from = "from the settings (--mem / mem_mb)";
+  } else if (env.memory) {
+    a.mem_from = "from " + env.memory->name;
+    a.mem_shown = env.memory->value;
+  } else if (sized) {
     a.mem_mb = ladder(settings_.margin * estimated_memory_bytes(job.cells) / (1024.0 * 1024.0));
+    a.mem_from = margin;
+  }
   return a;
 }
 
@@ -75,7 +117,7 @@ void SlurmExecutor::start(const JobLaunch& job) {
 }
 
 void SlurmExecutor::flush() {
-  if (!unsent_.empty() && Clock::now() >= retry_at_) submit_unsent();
+  if (!unsent_.empty() && Clock::now() >= retry_at_ && !fatal_) submit_unsent();
 }
 
 void SlurmExecutor::submit_unsent() {
@@ -92,9 +134,16 @@ void SlurmExecutor::submit_unsent() {
     else g->second.push_back(job);
   }
   unsent_.clear();
+  std::vector<SlurmArray> shapes;
+  for (const auto& g : groups) shapes.push_back(g.first);
+  // Once per submission round: which limits applied and where from.
+  std::string others;
+  for (const auto& e : settings_.environment.others) others += "; " + e.name + "=" + e.value;
+  spdlog::info("sbatch: {} job(s) in {} array(s): {}{}", unsent_count(groups), groups.size(), limits_note(shapes),
+               others);
   for (std::size_t i = 0; i < groups.size(); ++i) {
     submit_group(groups[i].second, groups[i].first);
-    if (!unsent_.empty()) {  // a transient fault: keep the rest for later, in order
+    if (!unsent_.empty()) {  // a fault: keep the rest for later (or for kill_all), in order
       for (std::size_t k = i + 1; k < groups.size(); ++k)
         unsent_.insert(unsent_.end(), groups[k].second.begin(), groups[k].second.end());
       return;
@@ -142,14 +191,13 @@ void SlurmExecutor::submit_group(const std::vector<JobLaunch>& group, const Slur
     unsent_.insert(unsent_.end(), group.begin(), group.end());
     return;
   }
-  for (const auto& j : group) {
-    JobExit e;
-    e.job_id = j.job_id;
-    e.how = JobExit::How::kRefused;
-    e.detail = msg;  // sbatch's own words ("sbatch: error: ...")
-    e.run_dir = j.run_dir;
-    finished_.push_back(std::move(e));
-  }
+  // Permanent: sbatch missing, a bad partition, account or option. No job is
+  // to blame, so none spends an attempt: they stay unsent (kill_all hands
+  // them back to be requeued) and nothing more is submitted.
+  fatal_ = r.not_found ? "sbatch could not be run (" + msg + "); PATH=" + path_text()
+                       : "sbatch refused the submission: " + msg;
+  spdlog::error("{}; {} job(s) go back to the queue, no attempt spent", *fatal_, group.size());
+  unsent_.insert(unsent_.end(), group.begin(), group.end());
 }
 
 std::optional<std::string> SlurmExecutor::find_unrecorded(const JobLaunch& job) {
@@ -312,6 +360,7 @@ std::optional<JobExit> SlurmExecutor::wait_any(double timeout_s) {
       finished_.pop_front();
       return e;
     }
+    if (fatal_) return std::nullopt;  // the caller stops (fatal_error())
     if (!unsent_.empty() && Clock::now() >= retry_at_) {
       submit_unsent();
       continue;

@@ -9,8 +9,12 @@
 //   finished  exit code from the exit_code file, else `sacct`, else the
 //             result.json the worker left (a purged job), else lost;
 //   faults    slurm_faults.h: transient submit failures wait and retry with
-//             backoff, permanent ones and never-startable jobs are refused
-//             with Slurm's own words;
+//             backoff; a permanent one (sbatch missing, a bad partition)
+//             submits nothing more and becomes fatal_error() (no attempt
+//             spent); never-startable jobs are refused with Slurm's words;
+//   limits    the user's time and memory (settings, sbatch_args, SBATCH_*
+//             environment) win over the cost model's; logged once per
+//             submission round (limits_note);
 //   timeout   counts run time (squeue's TimeUsed), not time in the queue,
 //             and becomes `--time` unless the settings give one;
 //   adopt()   takes over a task submitted by an earlier (crashed) process,
@@ -46,6 +50,7 @@ class SlurmExecutor : public Executor {
   std::string external_id(long long job_id) const override;
   std::vector<JobUpdate> take_updates() override;
   bool adopt(const JobLaunch& job, const std::string& external_id) override;
+  std::optional<std::string> fatal_error() const override { return fatal_; }
 
   // The poll interval now in effect (seconds).
   double poll_interval() const;
@@ -87,6 +92,7 @@ class SlurmExecutor : public Executor {
   std::deque<JobExit> finished_;
   std::vector<JobUpdate> updates_;
   int array_counter_ = 0;
+  std::optional<std::string> fatal_;         // a permanent submit failure: nothing more is submitted
 };
 
 }  // namespace gridfree

@@ -5,9 +5,11 @@
 //   sbatch refused a job  -> transient: retry the submission later, with
 //                            backoff, without spending an attempt
 //                            (controller unreachable, timeouts, submit limits)
-//                         -> permanent: fail the job now with sbatch's own
-//                            message (bad partition/account/QOS, bad options,
-//                            script errors, sbatch missing)
+//                         -> permanent: a configuration error (bad
+//                            partition/account/QOS, bad options, script
+//                            errors, sbatch missing): nothing more is
+//                            submitted, the run stops with sbatch's own
+//                            message, no attempt spent (fatal_error())
 //   a job waits in the queue with a Reason that no waiting can change
 //   (PartitionTimeLimit, ...PerJobLimit, InvalidAccount, ...) -> never
 //   startable: cancel it and fail it with that reason.

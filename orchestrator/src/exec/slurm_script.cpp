@@ -1,6 +1,10 @@
 // Slurm array scripts and sbatch command lines (see slurm_script.h).
 #include "exec/slurm_script.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
 #include <sstream>
 
 #include "exec/executor.h"
@@ -58,6 +62,52 @@ std::string array_script(const std::filesystem::path& worker, const SlurmArray& 
     << "echo $code > \"$dir/exit_code.tmp\" && mv \"$dir/exit_code.tmp\" \"$dir/exit_code\"\n"
     << "exit $code\n";
   return s.str();
+}
+
+std::string slurm_time_text(double minutes) {
+  const long s = std::lround(minutes * 60);
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%02ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  return buf;
+}
+
+std::string limits_note(const std::vector<SlurmArray>& arrays) {
+  // Per source: the range of the values gridfree passes, or the value shown.
+  struct Range {
+    long lo = 0, hi = 0;
+    std::string shown;
+  };
+  auto part = [&](const char* what, auto from, auto value, auto shown, auto text) {
+    std::map<std::string, Range> by_source;
+    std::vector<std::string> order;
+    for (const auto& a : arrays) {
+      const std::string src = from(a);
+      if (src.empty()) continue;
+      auto [it, added] = by_source.try_emplace(src);
+      if (added) order.push_back(src);
+      const long v = value(a);
+      if (v > 0) {
+        it->second.lo = it->second.lo == 0 ? v : std::min(it->second.lo, v);
+        it->second.hi = std::max(it->second.hi, v);
+      }
+      if (!shown(a).empty()) it->second.shown = shown(a);
+    }
+    std::string out;
+    for (const auto& src : order) {
+      const Range& r = by_source[src];
+      std::string v = r.shown;
+      if (r.lo > 0) v = text(r.lo) + (r.hi > r.lo ? "-" + text(r.hi) : "");
+      out += (out.empty() ? "" : ", ") + std::string(what) + (v.empty() ? "" : " " + v) + " " + src;
+    }
+    return out.empty() ? std::string(what) + " the cluster's default" : out;
+  };
+  const std::string time = part(
+      "time limit", [](const SlurmArray& a) { return a.time_from; }, [](const SlurmArray& a) { return a.time_minutes; },
+      [](const SlurmArray& a) { return a.time_shown; }, [](long m) { return slurm_time_text(static_cast<double>(m)); });
+  const std::string mem = part(
+      "memory", [](const SlurmArray& a) { return a.mem_from; }, [](const SlurmArray& a) { return a.mem_mb; },
+      [](const SlurmArray& a) { return a.mem_shown; }, [](long mb) { return std::to_string(mb) + "M"; });
+  return time + "; " + mem;
 }
 
 std::vector<std::string> sbatch_command(const SlurmArray& a, const SlurmSettings& s,

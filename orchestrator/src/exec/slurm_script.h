@@ -29,7 +29,19 @@ struct SlurmArray {
   long mem_mb = 0;                               // --mem (0 = not given)
   int throttle = 0;                              // %N (0 = none)
   int stop_lead_s = kSlurmStopLeadSeconds;       // --signal=B:TERM@stop_lead_s
+  // Where the time limit and memory come from, for the log: "computed from
+  // the cost model × 3", "from SBATCH_TIMELIMIT" ...; `*_shown` is the value
+  // when gridfree passes none itself ("7" of SBATCH_TIMELIMIT=7).
+  std::string time_from, time_shown, mem_from, mem_shown;
 };
+
+// One log line for the arrays of one submission round: which time limit
+// and memory applied and where each came from, e.g. "time limit 00:07:00
+// from SBATCH_TIMELIMIT; memory 256M-4096M computed from the cost model × 3".
+std::string limits_note(const std::vector<SlurmArray>& arrays);
+
+// Minutes as Slurm's HH:MM:SS ("00:07:00"; days as more hours).
+std::string slurm_time_text(double minutes);
 
 std::string array_script(const std::filesystem::path& worker, const SlurmArray& a,
                          const std::vector<std::string>& setup);

@@ -2,10 +2,13 @@
 #include "exec/slurm_settings.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 
+#include "core/command_suggestion.h"
 #include "core/input_error.h"
+#include "study/slurm_block.h"
 
 namespace gridfree {
 namespace {
@@ -53,9 +56,14 @@ SlurmSettings slurm_settings_from_json(const nlohmann::json& j, const std::strin
     else if (key == "array_size") s.array_size = int_of(v, f);
     else if (key == "poll_s") s.poll_s = number_of(v, f);
     else if (key == "margin") s.margin = number_of(v, f);
-    else
-      throw InputError(f, "unknown setting; valid: partition, account, qos, constraint, time_minutes, mem_mb, "
-                          "cpus_per_task, sbatch_args, setup, runs_dir, max_queued, array_size, poll_s, margin");
+    else {
+      std::string valid;
+      for (const auto& k : slurm_setting_keys()) valid += (valid.empty() ? "" : ", ") + k;
+      const std::string near = nearest_name(key, slurm_setting_keys());
+      throw InputError(where + "." + key.substr(0, 64),
+                       "unknown setting" + (near.empty() ? std::string() : "; did you mean '" + near + "'?") +
+                           " (valid: " + valid + ")");
+    }
   }
   validate(s);
   return s;
@@ -108,8 +116,68 @@ void validate(const SlurmSettings& s) {
     throw InputError("--array-size", "must be between 1 and 100000");
   if (!(std::isfinite(s.margin) && s.margin >= 1)) throw InputError("margin", "must be at least 1");
   for (const auto& a : s.sbatch_args)
-    if (a.rfind("--array", 0) == 0 || a.rfind("--output", 0) == 0 || a.rfind("--parsable", 0) == 0)
-      throw InputError("--sbatch-arg", "'" + a + "' is set by gridfree itself");
+    if (const auto option = sbatch_option_set_by_gridfree(a); !option.empty())
+      throw InputError("--sbatch-arg", "'" + a.substr(0, 64) + "' passes " + option +
+                                           ", which gridfree sets itself (refused: --array, --output, --error, "
+                                           "--job-name, --parsable, --signal, --requeue, --no-requeue, "
+                                           "--cpus-per-task, --wrap and their short forms)");
+}
+
+EnvLookup process_environment() {
+  return [](const std::string& name) -> std::optional<std::string> {
+    const char* v = std::getenv(name.c_str());
+    if (v == nullptr) return std::nullopt;
+    return std::string(v);
+  };
+}
+
+SbatchEnvironment sbatch_environment(const EnvLookup& env) {
+  SbatchEnvironment e;
+  auto first_set = [&](std::initializer_list<const char*> names) -> std::optional<EnvSetting> {
+    for (const char* n : names)
+      if (auto v = env(n); v && !v->empty()) return EnvSetting{n, *v};
+    return std::nullopt;
+  };
+  e.time = first_set({"SBATCH_TIMELIMIT"});
+  e.memory = first_set({"SBATCH_MEM_PER_NODE", "SBATCH_MEM_PER_CPU", "SBATCH_MEM_PER_GPU"});
+  for (const char* n : {"SBATCH_PARTITION", "SBATCH_ACCOUNT", "SBATCH_QOS", "SBATCH_CONSTRAINT"})
+    if (auto v = first_set({n})) e.others.push_back(*v);
+  return e;
+}
+
+std::optional<double> slurm_time_minutes(const std::string& text) {
+  // Numbers separated by ':' after an optional "D-".
+  double days = 0;
+  std::string rest = text;
+  const bool has_days = rest.find('-') != std::string::npos;
+  auto number = [](const std::string& t) -> std::optional<double> {
+    if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    return std::stod(t);
+  };
+  if (has_days) {
+    const auto d = number(rest.substr(0, rest.find('-')));
+    if (!d) return std::nullopt;
+    days = *d;
+    rest = rest.substr(rest.find('-') + 1);
+  }
+  std::vector<double> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const auto end = rest.find(':', start);
+    const auto v = number(rest.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (!v) return std::nullopt;
+    parts.push_back(*v);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  if (parts.size() > 3) return std::nullopt;
+  if (has_days) {  // D-HH, D-HH:MM, D-HH:MM:SS
+    const double h = parts[0], m = parts.size() > 1 ? parts[1] : 0, sec = parts.size() > 2 ? parts[2] : 0;
+    return days * 1440 + h * 60 + m + sec / 60;
+  }
+  if (parts.size() == 1) return parts[0];                       // MM
+  if (parts.size() == 2) return parts[0] + parts[1] / 60;       // MM:SS
+  return parts[0] * 60 + parts[1] + parts[2] / 60;              // HH:MM:SS
 }
 
 }  // namespace gridfree

@@ -13,6 +13,7 @@
 #include "job/job_spec.h"
 #include "schemes/limiter.h"
 #include "study/case_extends.h"
+#include "study/slurm_block.h"
 #include "study/study.h"
 #include "study/study_alignment.h"
 #include "study/study_plan.h"
@@ -431,6 +432,23 @@ void check_baseline_given(const json& doc, ProblemList& problems) {
                       "fields left out are the first case and the first level of each factor)");
 }
 
+// The slurm block's keys and types are the schema's; its extra sbatch words
+// are checked here with the Slurm executor's own rule (study/slurm_block.h),
+// so that validate refuses what `run --executor slurm` would.
+void check_slurm_block(const json& doc, ProblemList& problems) {
+  const auto s = doc.find("slurm");
+  if (s == doc.end() || !s->is_object()) return;
+  const auto args = s->find("sbatch_args");
+  if (args == s->end() || !args->is_array()) return;
+  for (std::size_t i = 0; i < args->size(); ++i) {
+    if (!(*args)[i].is_string()) continue;
+    const std::string word = (*args)[i].get<std::string>();
+    if (const auto option = sbatch_option_set_by_gridfree(word); !option.empty())
+      problems.add_once("/slurm/sbatch_args/" + std::to_string(i),
+                        "'" + word.substr(0, 64) + "' passes " + option + ", which gridfree sets itself");
+  }
+}
+
 }  // namespace
 
 Study parse_study_document(const json& given, const std::filesystem::path& base_dir) {
@@ -465,6 +483,7 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   default_factors(s);
   parse_design(doc, s, problems);
   check_baseline_given(doc, problems);
+  check_slurm_block(doc, problems);
   check_deposition_levels(s, problems);
   parse_grids(doc, s, problems);
   parse_alignment(doc, s, problems);  // study_alignment.cpp

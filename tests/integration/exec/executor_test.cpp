@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -212,6 +213,8 @@ fs::path fake_slurm(const fs::path& dir) {
     fs::permissions(bin / name, fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);
   };
   script("sbatch", "[ \"$1\" = --parsable ] || exit 9\n"
+                   "[ \"$(cat \"" + (dir / "mode").string() + "\")\" = refuse ] && "
+                   "{ echo 'sbatch: error: invalid partition name specified' >&2; exit 1; }\n"
                    "echo \"$@\" >> \"" + (dir / "sbatch_args").string() + "\"\n"
                    "n=$(cat \"" + (dir / "next_id").string() + "\" 2>/dev/null || echo 100)\n"
                    "echo $((n + 1)) > \"" + (dir / "next_id").string() + "\"\n"
@@ -303,6 +306,74 @@ TEST(SlurmExecutor, TheStopLeadGrowsWithTheEarlierAttemptsIterationTime) {
     EXPECT_NE(args[1].find("--signal=B:TERM@" + lead + " "), std::string::npos) << args[1];
     ex.kill_all();
   }
+  setenv("PATH", old_path.c_str(), 1);
+}
+
+// The user's SBATCH_TIMELIMIT / SBATCH_MEM_PER_NODE win over the computed
+// defaults: gridfree passes no --time/--mem (sbatch would let its command
+// line override the environment), and the stop lead stays within the
+// environment's limit (half of 6 min = 180 s). Without them the job gets the
+// computed values.
+TEST(SlurmExecutor, TheUsersSbatchEnvironmentWinsOverTheComputedLimits) {
+  const auto dir = temp_dir("slurm_env");
+  const auto bin = fake_slurm(dir);
+  const std::string old_path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
+  std::ofstream(dir / "mode") << "hold";
+  auto submitted = [&](const SbatchEnvironment& env) {
+    fs::remove(dir / "sbatch_args");
+    SlurmSettings settings;
+    settings.poll_s = 0.05;
+    settings.environment = env;
+    SlurmExecutor ex(kFakeWorker, dir / "runs", settings, 1);
+    auto job = launch(dir / "runs", 1, "ok", 3600);
+    job.cells = {10, 60, 3};
+    std::ofstream(progress_file(job.run_dir)) << R"({"iteration": 40, "longest_iteration_s": 210})";
+    ex.start(job);
+    ex.flush();
+    ex.kill_all();
+    std::ifstream in(dir / "sbatch_args");
+    std::string line;
+    std::getline(in, line);
+    return line;
+  };
+  const std::string computed = submitted({});
+  EXPECT_NE(computed.find("--time=61 "), std::string::npos) << computed;  // the 1 h timeout + 1 min
+  EXPECT_NE(computed.find("--mem="), std::string::npos) << computed;
+  SbatchEnvironment env;
+  env.time = EnvSetting{"SBATCH_TIMELIMIT", "6"};
+  env.memory = EnvSetting{"SBATCH_MEM_PER_NODE", "500M"};
+  const std::string given = submitted(env);
+  EXPECT_EQ(given.find("--time"), std::string::npos) << given;
+  EXPECT_EQ(given.find("--mem"), std::string::npos) << given;
+  EXPECT_NE(given.find("--signal=B:TERM@180 "), std::string::npos) << given;
+  setenv("PATH", old_path.c_str(), 1);
+}
+
+// sbatch refusing a submission for good (a bad partition) spends no
+// attempt: no job comes back as finished, the executor reports the fatal
+// error and submits nothing more, and kill_all hands every job back.
+TEST(SlurmExecutor, APermanentSubmitFailureIsFatalAndSpendsNoAttempt) {
+  const auto dir = temp_dir("slurm_refuse");
+  const auto bin = fake_slurm(dir);
+  const std::string old_path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
+  std::ofstream(dir / "mode") << "refuse";
+  SlurmSettings settings;
+  settings.poll_s = 0.05;
+  SlurmExecutor ex(kFakeWorker, dir / "runs", settings, 1);
+  ex.start(launch(dir / "runs", 1, "ok"));
+  ex.start(launch(dir / "runs", 2, "ok"));
+  ex.flush();
+  ASSERT_TRUE(ex.fatal_error());
+  EXPECT_NE(ex.fatal_error()->find("invalid partition name specified"), std::string::npos) << *ex.fatal_error();
+  EXPECT_FALSE(ex.wait_any(0.2));  // nothing finished, nothing failed
+  std::ofstream(dir / "mode") << "hold";
+  ex.flush();  // not submitted again
+  EXPECT_FALSE(fs::exists(dir / "sbatch_args"));
+  auto ids = ex.kill_all();
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(ids, (std::vector<long long>{1, 2}));
   setenv("PATH", old_path.c_str(), 1);
 }
 

@@ -291,23 +291,24 @@ TEST_F(SlurmCluster, ControllerDownAtSubmitAndMidStudyCostsNoAttempt) {
   expect_each_job_solved_once(4);
 }
 
-TEST_F(SlurmCluster, ABadPartitionFailsFastWithSbatchsWordsAndRetryRecovers) {
+// sbatch refusing the submission (a bad partition) is a configuration
+// error: exit 2 with sbatch's words, the jobs back in the queue with no
+// attempt spent, and the corrected command finishes them.
+TEST_F(SlurmCluster, ABadPartitionIsAConfigurationErrorThatSpendsNoAttempt) {
   // The partition comes from the study's own "slurm" settings.
   const auto file = study("badpart", {"ok_a"}, {{"partition", "nope"}});
   auto r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) + " --executor slurm");
-  EXPECT_EQ(r.exit_code, 3) << r.out;
-  EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE reason LIKE '%Invalid partition name specified%'"), 4)
-      << sql("SELECT reason FROM results");
-  EXPECT_EQ(count("SELECT MAX(attempts) FROM jobs"), 1);  // not tried twice
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("Invalid partition name specified"), std::string::npos) << r.err;
+  EXPECT_EQ(sql("SELECT status, attempts, COUNT(*) FROM jobs GROUP BY status, attempts"), "queued|0|4");
+  EXPECT_EQ(count("SELECT COUNT(*) FROM results"), 0);
   EXPECT_TRUE(solves().empty());
-  r = gridfree("retry badpart --db " + shell_quote(db().string()));
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_NE(r.out.find("requeued 4 failed job(s)"), std::string::npos) << r.out;
   // A flag overrides the study (profile < study < flags).
   r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) +
                " --executor slurm --partition debug");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 4);
+  EXPECT_EQ(count("SELECT MAX(attempts) FROM jobs"), 1);
   expect_each_job_solved_once(4);
 }
 
@@ -341,8 +342,6 @@ TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
   std::ofstream(dir / "profile.json") << R"({"partition": "p", "mem_gb": 4})";
   auto doc = quickstart_document();
   std::ofstream(dir / "plain.json") << doc.dump();
-  doc["slurm"] = {{"partition", "p"}};
-  std::ofstream(dir / "with_slurm.json") << doc.dump();
   doc["slurm"] = {{"partiton", "p"}};
   std::ofstream(dir / "misspelt.json") << doc.dump();
   const std::string db = " --db " + shell_quote((dir / "g.sqlite").string());
@@ -353,10 +352,10 @@ TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
       {"--executor slurm --cpus-per-task 0", "--cpus-per-task"},
       {"--executor slurm --sbatch-arg=--array=1-9", "--sbatch-arg"},
       {"--executor pbs", "--executor"},
-      {"--partition debug", "--partition"},  // a Slurm flag without --executor slurm
-      {"", "/slurm"}};  // a study with Slurm settings, run locally
+      {"--executor slurm --sbatch-arg=-o", "--sbatch-arg"},
+      {"--partition debug", "--partition"}};  // a Slurm flag without --executor slurm
   for (const auto& [flags, field] : cases) {
-    const auto file = dir / (flags.empty() ? "with_slurm.json" : "plain.json");
+    const auto file = dir / "plain.json";
     const auto r = run_command(
         shell_quote(kGridfreeExe.string()) + " run " + shell_quote(file.string()) + db + " " + flags, dir / "err.txt");
     EXPECT_EQ(r.exit_code, 2) << flags << ": " << r.err;
@@ -367,7 +366,8 @@ TEST(SlurmSettingsCli, BadSettingsExitTwoNamingTheFieldAndLeaveNoDatabase) {
                                  shell_quote((dir / "misspelt.json").string()) + db + " --executor slurm",
                              dir / "err.txt");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("/slurm.partiton"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/slurm/partiton"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("did you mean 'partition'?"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -90,5 +90,24 @@ TEST(SlurmScript, SbatchGetsEverySettingAsItsOwnWord) {
   EXPECT_EQ(c, want);
 }
 
+// The log line of a submission round names each limit's source and value.
+TEST(SlurmScript, TheLimitsNoteSaysWhereTimeAndMemoryCameFrom) {
+  SlurmArray from_env;
+  from_env.time_from = "from SBATCH_TIMELIMIT";
+  from_env.time_shown = "00:07:00";
+  from_env.mem_mb = 4096;
+  from_env.mem_from = "computed from the cost model x 3";
+  SlurmArray bigger = from_env;
+  bigger.mem_mb = 8192;
+  EXPECT_EQ(limits_note({from_env, bigger}),
+            "time limit 00:07:00 from SBATCH_TIMELIMIT; memory 4096M-8192M computed from the cost model x 3");
+  SlurmArray given;
+  given.time_minutes = 90;
+  given.time_from = "from the settings (--time / time_minutes)";
+  EXPECT_EQ(limits_note({given}),
+            "time limit 01:30:00 from the settings (--time / time_minutes); memory the cluster's default");
+  EXPECT_EQ(slurm_time_text(1450.5), "24:10:30");
+}
+
 }  // namespace
 }  // namespace gridfree

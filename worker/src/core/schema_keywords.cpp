@@ -6,6 +6,7 @@
 #include <set>
 #include <utility>
 
+#include "core/command_suggestion.h"
 #include "core/schema_messages.h"
 #include "core/schema_pattern.h"
 #include "core/schema_validation.h"
@@ -180,9 +181,15 @@ void SchemaChecker::check_object(const SchemaNode& n, const json& v, int depth) 
     if (sub == nullptr) continue;
     if (sub->is_boolean() && !sub->get<bool>() && sub == extra) {
       std::string allowed;
+      std::vector<std::string> names;
       if (props)
-        for (const auto& [name, unused] : props->items()) allowed += (allowed.empty() ? "" : ", ") + name;
-      add_at(key, "unknown key" + (allowed.empty() ? std::string() : " (allowed: " + allowed + ")"));
+        for (const auto& [name, unused] : props->items()) {
+          allowed += (allowed.empty() ? "" : ", ") + name;
+          names.push_back(name);
+        }
+      const std::string near = nearest_name(key, names);
+      add_at(key, "unknown key" + (near.empty() ? std::string() : "; did you mean '" + near + "'?") +
+                      (allowed.empty() ? std::string() : " (allowed: " + allowed + ")"));
       continue;
     }
     path_.push_back(key);
