@@ -1,5 +1,7 @@
 // gridfree status [STUDY] [--json] (with STUDY: series, running jobs, ETA) | report STUDY [--out DIR] | cancel STUDY
+#include <algorithm>
 #include <iostream>
+#include <optional>
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
@@ -7,16 +9,44 @@
 #include "exec/executor.h"
 #include "sched/series_finish.h"
 #include "sched/study_status.h"
+#include "store/orphans.h"
 
 namespace gridfree::cli {
 namespace {
 
-nlohmann::json status_json(const StudyStatus& s) {
-  return {{"name", s.name},          {"status", s.status},       {"submitted_at", s.submitted_at},
-          {"finished_at", s.finished_at}, {"design", s.design},  {"jobs", s.jobs},
-          {"queued", s.queued},      {"running", s.running},     {"done", s.done},
-          {"failed", s.failed},      {"cancelled", s.cancelled}, {"converged", s.converged},
-          {"series", s.series},      {"series_done", s.series_done}};
+// What a study is doing now, as opposed to its stored status: a "running"
+// study none of whose jobs a live process works on (its run or daemon was
+// stopped or killed) is "queued" while it has queued (or orphaned) jobs,
+// else "idle".
+std::string shown_status(const StudyStatus& s, const RunningJobs& r) {
+  if (s.status != "running" || !r.live.empty()) return s.status;
+  return s.queued > 0 || !r.orphaned.empty() ? "queued" : "idle";
+}
+
+nlohmann::json status_json(const StudyStatus& s, const RunningJobs& r) {
+  const int live = static_cast<int>(r.live.size()), orphaned = static_cast<int>(r.orphaned.size());
+  return {{"name", s.name},          {"status", shown_status(s, r)}, {"stored_status", s.status},
+          {"submitted_at", s.submitted_at}, {"finished_at", s.finished_at}, {"design", s.design},
+          {"jobs", s.jobs},          {"queued", s.queued},       {"running", live},
+          {"orphaned", orphaned},    {"done", s.done},           {"failed", s.failed},
+          {"cancelled", s.cancelled}, {"converged", s.converged}, {"series", s.series},
+          {"series_done", s.series_done}};
+}
+
+// The detail of a study as it is now: orphaned jobs out of the running list,
+// and no ETA while no live process works on the study (it would only say
+// how long the work takes once someone runs it).
+void mark_orphans(nlohmann::json& d, const RunningJobs& r) {
+  nlohmann::json running = nlohmann::json::array();
+  for (const auto& row : d["running"])
+    if (!row.contains("job") || !r.orphaned.count(row["job"].get<long long>())) running.push_back(row);
+  d["running"] = running;
+  d["orphaned"] = r.orphaned.size();
+  const bool work_left = d["eta"]["seconds"].is_number() && d["eta"]["seconds"].get<double>() > 0;
+  if (r.live.empty() && work_left) {
+    d["eta"]["seconds"] = nullptr;
+    d["eta"]["text"] = nullptr;
+  }
 }
 
 }  // namespace
@@ -35,9 +65,19 @@ void add_status_command(CLI::App& app, int& exit_code) {
     if (!name->empty()) id = require_study(*store, *name);
     const auto rows = store->statuses(id);
     const auto queue = id ? store->queue_jobs(*id) : std::vector<Store::QueuedJob>{};
+    const auto running = running_jobs_by_study(*store, id);
+    auto running_of = [&running](long long study_id) {
+      const auto it = running.find(study_id);
+      return it == running.end() ? RunningJobs{} : it->second;
+    };
+    std::optional<nlohmann::json> detail;
+    if (id && !rows.empty()) {
+      detail = study_detail(*store, *id, runs_root_for(*db));
+      mark_orphans(*detail, running_of(*id));
+    }
     if (*json) {
       nlohmann::json out = nlohmann::json::array();
-      for (const auto& s : rows) out.push_back(status_json(s));
+      for (const auto& s : rows) out.push_back(status_json(s, running_of(s.id)));
       if (id && !out.empty()) {  // Slurm jobs of the named study: id, state, pending reason
         nlohmann::json q = nlohmann::json::array();
         for (const auto& j : queue)
@@ -45,15 +85,21 @@ void add_status_command(CLI::App& app, int& exit_code) {
                        {"state", j.state}, {"reason", j.reason}});
         out[0]["slurm"] = q;
       }
-      if (id && !out.empty()) out[0]["detail"] = study_detail(*store, *id, runs_root_for(*db));
+      if (detail) out[0]["detail"] = *detail;
       std::cout << out.dump(2) << '\n';
     } else {
-      std::printf("%-28s %-10s %6s %6s %7s %6s %6s %9s %8s\n", "study", "status", "jobs", "queued", "running",
-                  "done", "failed", "converged", "series");
-      for (const auto& s : rows)
-        std::printf("%-28s %-10s %6d %6d %7d %6d %6d %9d %4d/%-3d\n", s.name.c_str(), s.status.c_str(), s.jobs,
-                    s.queued, s.running, s.done, s.failed, s.converged, s.series_done, s.series);
-      if (id) std::cout << '\n' << study_detail_text(study_detail(*store, *id, runs_root_for(*db)));
+      std::printf("%-28s %-10s %6s %6s %7s %8s %6s %6s %9s %9s %8s\n", "study", "status", "jobs", "queued",
+                  "running", "orphaned", "done", "failed", "cancelled", "converged", "series");
+      for (const auto& s : rows) {
+        const RunningJobs r = running_of(s.id);
+        std::printf("%-28s %-10s %6d %6d %7zu %8zu %6d %6d %9d %9d %4d/%-3d\n", s.name.c_str(),
+                    shown_status(s, r).c_str(), s.jobs, s.queued, r.live.size(), r.orphaned.size(), s.done, s.failed,
+                    s.cancelled, s.converged, s.series_done, s.series);
+      }
+      if (std::any_of(running.begin(), running.end(), [](const auto& x) { return !x.second.orphaned.empty(); }))
+        std::cout << "orphaned: marked running by a run or daemon that is gone; the next run or daemon adopts "
+                     "(Slurm) or requeues them\n";
+      if (detail) std::cout << '\n' << study_detail_text(*detail);
       if (!queue.empty()) {
         std::printf("\n%8s %-14s %-14s %-12s %s\n", "job", "grid", "slurm id", "state", "reason");
         for (const auto& j : queue)

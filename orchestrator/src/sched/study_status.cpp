@@ -73,7 +73,8 @@ nlohmann::json study_detail(Store& store, long long study_id, const std::filesys
         const auto dir = runs_root / p.job_hash;
         const auto prog = read_job_progress(progress_file(dir));
         if (prog && (*prog)["elapsed_s"].is_number()) e.elapsed_s = (*prog)["elapsed_s"].get<double>();
-        nlohmann::json r = {{"series", s.key.label()},
+        nlohmann::json r = {{"job", p.job_id},
+                            {"series", s.key.label()},
                             {"delta_star", p.delta_star},
                             {"cells", {p.cells[0], p.cells[1], p.cells[2]}},
                             {"log", (dir / "worker.log").string()}};
@@ -123,6 +124,9 @@ std::string study_detail_text(const nlohmann::json& d) {
       out += line;
     }
   }
+  // No ETA (null): nobody works on the study now (gridfree status).
+  if (!d["eta"]["seconds"].is_number())
+    return out + (d["running"].empty() ? "\nno ETA: no run or daemon works on this study now\n" : "");
   if (d["running"].empty() && d["eta"]["seconds"].get<double>() <= 0) return out + "\nnothing left to run\n";
   out += "\nETA " + d["eta"]["text"].get<std::string>() + " (cost model × " + cell(d["eta"]["model_scale"], "%.2g") +
          " from the finished jobs)\n";
