@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "report/adaptive_section.h"
+#include "report/html_toc.h"
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
@@ -36,25 +37,32 @@ div.verdict-converged { border-color: #009e73; } div.verdict-pre-asymptotic { bo
 div.verdict-unreliable, div.verdict-insufficient_grids { border-color: #d55e00; }
 div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em; }
 @page { size: A4; margin: 10mm; }
+@page landscape { size: A4 landscape; margin: 10mm; }
 @media print {
   body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
   .scroll { overflow: visible; }
-  table.data { font-size: 6.5pt; width: 100%; table-layout: auto; }
-  table.data th, table.data td { white-space: normal; overflow-wrap: anywhere; padding: 1px 2px; }
-  table.data td.prose { min-width: 0; }
+  table.data { font-size: 6.5pt; table-layout: auto; }
+  table.data.fit-landscape-small { font-size: 5pt; }
+  section:has(> .scroll > table.fit-landscape, > .scroll > table.fit-landscape-small),
+  .scroll:has(> table.fit-landscape, > table.fit-landscape-small) { page: landscape; }
+  table.data th, table.data td { white-space: normal; overflow-wrap: normal; word-break: normal; padding: 1px 2px; }
+  table.data td.num { white-space: nowrap; }
+  table.data td.prose { min-width: 10em; }
   .charts { display: block; }
   figure { break-inside: avoid; } h2, h3 { break-after: avoid; }
   nav.toc { columns: 1; }
 }
 )css";
 
+// A table under its heading, in a <section> so that a table printed on a
+// landscape page takes its heading and notes along.
 std::string table_section(const NamedTable& t, const std::string& id, const std::string& empty_text) {
-  std::string out = "<h2 id=\"" + id + "\">" + xml_escape(t.title) + "</h2>\n";
+  std::string out = "<section>\n<h2 id=\"" + id + "\">" + xml_escape(t.title) + "</h2>\n";
   const std::string note = reading_note(t.file);
   if (!note.empty()) out += "<p class=\"note\">" + xml_escape(note) + "</p>\n";
   out += t.table.rows.empty() ? "<p>" + xml_escape(empty_text) + "</p>\n"
                               : "<div class=\"scroll\">\n" + to_html(t.table) + "</div>\n";
-  out += "<p class=\"note\">CSV: " + xml_escape(t.file) + " (beside this file)</p>\n";
+  out += "<p class=\"note\">CSV: " + xml_escape(t.file) + " (beside this file)</p>\n</section>\n";
   return out;
 }
 
@@ -79,24 +87,18 @@ std::string verdict_section(const ReportContent& c) {
 
 std::string about_section(const ReportContent& c) {
   std::string out;
+  int n = 0;
   for (const auto& a : about_sections(c.data.generator_kinds)) {
-    out += "<h2 id=\"about\">" + xml_escape(a.title) + "</h2>\n";
+    out += "<h2 id=\"about" + (n++ ? "-" + std::to_string(n) : std::string()) + "\">" + xml_escape(a.title) + "</h2>\n";
     for (const auto& p : a.paragraphs) out += "<p>" + xml_escape(p) + "</p>\n";
   }
   return out;
 }
 
-// Sections and every file beside the report, linked.
-std::string contents(const ReportContent& c) {
-  std::string out = "<nav class=\"toc\"><strong>Contents</strong>\n<ul>\n";
-  for (const auto& [id, title] : std::vector<std::pair<std::string, std::string>>{
-           {"verdicts", "Verdicts"}, {"series", c.series_table.title}, {"differences", c.differences_table.title},
-           {"cost", c.cost_table.title}, {"coverage", c.coverage_table.title}, {"charts", "Charts"}, {"gci", c.gci_table.title}, {"failures", c.failures_table.title},
-           {"grids", c.grids_table.title}})
-    out += "<li><a href=\"#" + id + "\">" + xml_escape(title) + "</a></li>\n";
-  if (!about_sections(c.data.generator_kinds).empty()) out += "<li><a href=\"#about\">About this case</a></li>\n";
-  if (!c.alignment.empty()) out += "<li><a href=\"#alignment\">" + xml_escape(c.alignment_table.title) + "</a></li>\n";
-  out += "</ul>\n<strong>Files</strong>\n<ul>\n";
+// Every section of `body` (html_toc.h) and every file beside the report, linked.
+std::string contents(const ReportContent& c, const std::string& body) {
+  std::string out = "<nav class=\"toc\"><strong>Contents</strong>\n" + toc_list_html(html_sections(body));
+  out += "<strong>Files</strong>\n<ul>\n";
   for (const NamedTable* t :
        {&c.series_table, &c.differences_table, &c.cost_table, &c.coverage_table, &c.gci_table, &c.failures_table,
         &c.grids_table})
@@ -133,29 +135,29 @@ std::string render_html(const ReportContent& c) {
     for (const auto& w : warnings) out += "<li>" + xml_escape(w) + "</li>\n";
     out += "</ul></div>\n";
   }
-  out += contents(c);
-  out += verdict_section(c);
-  out += adaptive_section_html(c.data.adaptive_decisions);
-  out += about_section(c);
-  out += ensembles_html(c);
-  out += table_section(c.series_table, "series", "No series.");
-  out += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
-  out += table_section(c.cost_table, "cost", "No series has an extrapolation yet.");
-  out += table_section(c.coverage_table, "coverage",
-                       "No series checked yet: a series needs all its grids and at least 6 of them converged.");
-  out += "<h2 id=\"charts\">Charts</h2>\n<div class=\"charts\">\n";
+  std::string body = verdict_section(c);
+  body += adaptive_section_html(c.data.adaptive_decisions);
+  body += about_section(c);
+  body += ensembles_html(c);
+  body += table_section(c.series_table, "series", "No series.");
+  body += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
+  body += table_section(c.cost_table, "cost", "No series has an extrapolation yet.");
+  body += table_section(c.coverage_table, "coverage",
+                        "No series checked yet: a series needs all its grids and at least 6 of them converged.");
+  body += "<h2 id=\"charts\">Charts</h2>\n<div class=\"charts\">\n";
   for (const auto& chart : c.charts) {
-    if (!per_series(chart)) out += figure(chart);
+    if (!per_series(chart)) body += figure(chart);
   }
-  out += "</div>\n<h3>Per series</h3>\n<div class=\"charts\">\n";
+  body += "</div>\n<h3 id=\"per-series\">Per series</h3>\n<div class=\"charts\">\n";
   for (const auto& chart : c.charts) {
-    if (per_series(chart)) out += figure(chart);
+    if (per_series(chart)) body += figure(chart);
   }
-  out += "</div>\n";
-  if (!c.alignment.empty()) out += table_section(c.alignment_table, "alignment", "");
-  out += table_section(c.gci_table, "gci", "No series has three converged grids yet.");
-  out += table_section(c.failures_table, "failures", "None: every finished grid converged.");
-  out += table_section(c.grids_table, "grids", "No grids.");
+  body += "</div>\n";
+  if (!c.alignment.empty()) body += table_section(c.alignment_table, "alignment", "");
+  body += table_section(c.gci_table, "gci", "No series has three converged grids yet.");
+  body += table_section(c.failures_table, "failures", "None: every finished grid converged.");
+  body += table_section(c.grids_table, "grids", "No grids.");
+  out += contents(c, body) + body;
   out += "</body>\n</html>\n";
   return out;
 }

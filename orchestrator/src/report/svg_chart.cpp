@@ -71,11 +71,15 @@ void resolve_scale(ChartAxis& axis, const std::vector<double>& values) {
   if (axis.max && *axis.max <= 0) axis.max.reset();
 }
 
-// Label boxes already placed, to keep point labels apart.
+// Boxes already taken (markers, error bars, placed labels), to keep point
+// labels apart from each other and off the points; a label must also lie
+// inside the plot area.
 struct LabelBoxes {
   struct Box { double x0, y0, x1, y1; };
+  Box area;
   std::vector<Box> boxes;
   bool place(const Box& b) {
+    if (b.x0 < area.x0 || b.x1 > area.x1 || b.y0 < area.y0 || b.y1 > area.y1) return false;
     for (const Box& o : boxes) {
       if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return false;
     }
@@ -83,6 +87,29 @@ struct LabelBoxes {
     return true;
   }
 };
+
+// A point label of font 10 at the first free place around its point
+// (above right, below left, above left, below right, right, left), or ""
+// when every place collides.
+std::string point_label(LabelBoxes& taken, double x, double y, const std::string& label) {
+  const double w = text_width_px(label, 10.0);
+  struct Place { double dx, baseline; bool end; };
+  for (const Place& p : {Place{5, -7, false}, Place{-5, 16, true}, Place{-5, -7, true}, Place{5, 16, false},
+                         Place{7, 4, false}, Place{-7, 4, true}}) {
+    const double x0 = p.end ? x + p.dx - w : x + p.dx;
+    if (!taken.place({x0, y + p.baseline - 9, x0 + w, y + p.baseline + 2})) continue;
+    return text(x + p.dx, y + p.baseline, label,
+                std::string(" class=\"point-label\" font-size=\"10\" fill=\"#555\"") +
+                    (p.end ? " text-anchor=\"end\"" : ""));
+  }
+  return {};
+}
+
+// Font size at which `markup` is at most max_px wide (font_px if it fits).
+double fitting_font(const std::string& markup, double font_px, double max_px) {
+  const double w = text_width_px(markup, font_px);
+  return w <= max_px ? font_px : std::floor(font_px * max_px / w * 10) / 10;
+}
 
 }  // namespace
 
@@ -136,6 +163,16 @@ std::string render_svg(const Chart& given) {
   const AxisTicks xt = axis_ticks(chart.x, xs, 7);
   const AxisTicks yt = axis_ticks(chart.y, ys, 6);
 
+  // Points off a fixed axis range become arrows, counted in the note line.
+  int offscale_count = 0;
+  {
+    const AxisMap ux{chart.x.scale, xt.lo, xt.hi, 0, 1}, uy{chart.y.scale, yt.lo, yt.hi, 1, 0};
+    for (const auto& s : chart.series) {
+      for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()) && s.marker != Marker::none; ++i)
+        if (!(ux.contains(s.x[i]) && (std::isnan(s.y[i]) || uy.contains(s.y[i])))) ++offscale_count;
+    }
+  }
+
   // 2. Layout.
   std::vector<LegendEntry> legend;
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
@@ -153,9 +190,25 @@ std::string render_svg(const Chart& given) {
   for (const auto& e : legend) legend_labels.push_back(e.label);
   const double legend_w = legend_width(legend_labels);
   if (legend_w > 280.0) chart.width += static_cast<int>(std::ceil(legend_w - 280.0));
+  // Title, subtitle and note wrap to the chart's width; the chart grows by
+  // the extra lines, so the plot keeps its size.
+  const double title_scale = 1.1;  // bold text is about 10 % wider
+  std::vector<std::string> title_lines = wrap_markup(chart.title, (chart.width - 24) / title_scale, 15.0);
+  if (title_lines.empty()) title_lines.emplace_back();
+  const std::vector<std::string> subtitle_lines = wrap_markup(chart.subtitle, chart.width - 24.0, 12.0);
+  std::string note = chart.note;
+  if (offscale_count > 0) {
+    note += std::string(note.empty() ? "" : " ") + std::to_string(offscale_count) +
+            (offscale_count == 1 ? " point" : " points") + " off scale (arrows on the edge).";
+  }
   const double left = 78, right = chart.width - 16 - legend_w;
-  const double top = chart.subtitle.empty() ? 44 : 60;
-  const double bottom = chart.height - 66.0;  // room for the x label and a note line
+  const std::vector<std::string> note_lines = wrap_markup(note, chart.width - left - 12.0, 11.0);
+  const double title_bottom = 22.0 + 19.0 * double(title_lines.size() - 1);
+  const double top = subtitle_lines.empty() ? title_bottom + 22.0
+                                            : title_bottom + 18.0 + 15.0 * double(subtitle_lines.size() - 1) + 20.0;
+  const int extra_note = 14 * std::max(0, int(note_lines.size()) - 1);
+  chart.height += static_cast<int>(std::ceil(top - (subtitle_lines.empty() ? 44.0 : 60.0))) + extra_note;
+  const double bottom = chart.height - 66.0 - extra_note;  // room for the x label and the note lines
   const AxisMap mx{chart.x.scale, xt.lo, xt.hi, left, right};
   const AxisMap my{chart.y.scale, yt.lo, yt.hi, bottom, top};
 
@@ -169,10 +222,14 @@ std::string render_svg(const Chart& given) {
   svg << "<defs><clipPath id=\"" << id << "-plot\"><rect x=\"" << px(left) << "\" y=\"" << px(top)
       << "\" width=\"" << px(right - left) << "\" height=\"" << px(bottom - top)
       << "\"/></clipPath></defs>\n";
-  svg << text(chart.width / 2.0, 22, chart.title, " text-anchor=\"middle\" font-size=\"15\" font-weight=\"bold\"") << "\n";
-  if (!chart.subtitle.empty()) {
-    svg << text(chart.width / 2.0, 40, chart.subtitle, " text-anchor=\"middle\" fill=\"#444444\"") << "\n";
-  }
+  for (std::size_t i = 0; i < title_lines.size(); ++i)
+    svg << text(chart.width / 2.0, 22 + 19.0 * double(i), title_lines[i],
+                " text-anchor=\"middle\" font-size=\"15\" font-weight=\"bold\"")
+        << "\n";
+  for (std::size_t i = 0; i < subtitle_lines.size(); ++i)
+    svg << text(chart.width / 2.0, title_bottom + 18 + 15.0 * double(i), subtitle_lines[i],
+                " text-anchor=\"middle\" fill=\"#444444\"")
+        << "\n";
 
   // 3. Grid, ticks, labels.
   svg << "<g stroke=\"#e3e3e3\" stroke-width=\"1\">";
@@ -184,14 +241,33 @@ std::string render_svg(const Chart& given) {
   for (double v : yt.major) svg << "<path d=\"M" << px(left) << " " << px(my(v)) << "h-5\"/>";
   for (double v : yt.minor) svg << "<path d=\"M" << px(left) << " " << px(my(v)) << "h-3\"/>";
   svg << "</g>\n<g fill=\"#222222\">";
-  for (double v : xt.major)
-    svg << text(mx(v), bottom + 18, format_tick(v, xt, chart.x.scale) + chart.x.tick_suffix, " text-anchor=\"middle\"");
-  for (double v : yt.major)
-    svg << text(left - 8, my(v) + 4, format_tick(v, yt, chart.y.scale) + chart.y.tick_suffix, " text-anchor=\"end\"");
+  // Tick labels stay inside the chart: an x label at the edge moves in, a
+  // y label wider than the margin gets a smaller font.
+  for (double v : xt.major) {
+    const std::string label = format_tick(v, xt, chart.x.scale) + chart.x.tick_suffix;
+    const double half = text_width_px(label, kFont) / 2;
+    svg << text(std::clamp(mx(v), 2 + half, chart.width - 2 - half), bottom + 18, label, " text-anchor=\"middle\"");
+  }
+  for (double v : yt.major) {
+    const std::string label = format_tick(v, yt, chart.y.scale) + chart.y.tick_suffix;
+    const double font = fitting_font(label, kFont, left - 32);  // right of the y axis label
+    svg << text(left - 8, my(v) + 4, label,
+                " text-anchor=\"end\"" + (font < kFont ? " font-size=\"" + format_g(font, 3) + "\"" : std::string()));
+  }
   svg << "</g>\n";
-  svg << text((left + right) / 2, bottom + 38, chart.x.label, " text-anchor=\"middle\"") << "\n";
+  auto axis_font = [](const std::string& label, double room) {
+    const double font = fitting_font(label, kFont, room);
+    return font < kFont ? " font-size=\"" + format_g(font, 3) + "\"" : std::string();
+  };
+  // The x label under the plot's middle, or the chart's when wider than the plot.
+  const double xmid = text_width_px(chart.x.label, kFont) <= right - left ? (left + right) / 2 : chart.width / 2.0;
+  svg << text(xmid, bottom + 38, chart.x.label, " text-anchor=\"middle\"" + axis_font(chart.x.label, chart.width - 4.0))
+      << "\n";
   const double ymid = (top + bottom) / 2;
-  svg << text(18, ymid, chart.y.label, " text-anchor=\"middle\" transform=\"rotate(-90 18 " + px(ymid) + ")\"") << "\n";
+  svg << text(18, ymid, chart.y.label,
+              " text-anchor=\"middle\" transform=\"rotate(-90 18 " + px(ymid) + ")\"" +
+                  axis_font(chart.y.label, 2 * std::min(ymid, chart.height - ymid) - 4))
+      << "\n";
   svg << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(right - left)
       << "\" height=\"" << px(bottom - top) << "\" fill=\"none\" stroke=\"#333333\"/>\n";
 
@@ -203,13 +279,19 @@ std::string render_svg(const Chart& given) {
         << palette_colour(h.colour) << "\" stroke-width=\"1.5\"" << (h.dashed ? " stroke-dasharray=\"7 4\"" : "")
         << " fill=\"none\"/>\n";
   }
-  int offscale = 0;
   std::ostringstream points;
-  LabelBoxes labels;  // markers first, so that point labels avoid them too
+  // Markers and error bars first, so that point labels avoid them too.
+  LabelBoxes labels{{left, top, right, bottom}, {}};
   for (const auto& s : chart.series) {
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()) && s.marker != Marker::none; ++i) {
-      if (mx.contains(s.x[i]) && my.contains(s.y[i]))
-        labels.boxes.push_back({mx(s.x[i]) - 4, my(s.y[i]) - 4, mx(s.x[i]) + 4, my(s.y[i]) + 4});
+      if (!mx.contains(s.x[i]) || !my.contains(s.y[i])) continue;
+      const double x = mx(s.x[i]), y = my(s.y[i]);
+      labels.boxes.push_back({x - 5, y - 5, x + 5, y + 5});
+      const double e = i < s.y_error.size() ? s.y_error[i] : NAN;
+      if (std::isfinite(e) && e > 0) {
+        const double lo = usable(s.y[i] - e, chart.y.scale) ? my(s.y[i] - e) : bottom;
+        labels.boxes.push_back({x - 4.5, std::max(my(s.y[i] + e), top) - 1, x + 4.5, std::min(lo, bottom) + 1});
+      }
     }
   }
   for (std::size_t si = 0; si < chart.series.size(); ++si) {
@@ -250,17 +332,11 @@ std::string render_svg(const Chart& given) {
         const std::string marker = svg_marker(s.marker, mx(x), no_value ? bottom : my(y), colour, s.hollow);
         points << (s.faded ? "<g opacity=\"0.35\">" + marker + "</g>" : marker) << "\n";
         if (i < s.point_labels.size() && !s.point_labels[i].empty() && !no_value) {
-          // Above-right of the point, else below-left, else no label.
-          const double w = text_width_px(s.point_labels[i], 10.0), px0 = mx(x), py0 = my(y);
-          if (labels.place({px0 + 5, py0 - 16, px0 + 5 + w, py0 - 5}))
-            points << text(px0 + 5, py0 - 7, s.point_labels[i], " font-size=\"10\" fill=\"#555\"") << "\n";
-          else if (labels.place({px0 - 5 - w, py0 + 7, px0 - 5, py0 + 18}))
-            points << text(px0 - 5, py0 + 16, s.point_labels[i], " font-size=\"10\" fill=\"#555\" text-anchor=\"end\"")
-                   << "\n";
+          const std::string label = point_label(labels, mx(x), my(y), s.point_labels[i]);
+          if (!label.empty()) points << label << "\n";
         }
         continue;
       }
-      ++offscale;
       const double cx = std::clamp(usable(x, chart.x.scale) ? mx(x) : left, left, right);
       const double cy = no_value ? bottom : std::clamp(usable(y, chart.y.scale) ? my(y) : bottom, top, bottom);
       const int dx = usable(x, chart.x.scale) && mx.contains(x) ? 0 : (usable(x, chart.x.scale) && x > xt.hi ? 1 : -1);
@@ -293,12 +369,10 @@ std::string render_svg(const Chart& given) {
     }
     svg << "</g>\n";
   }
-  std::string note = chart.note;
-  if (offscale > 0) {
-    note += std::string(note.empty() ? "" : " ") + std::to_string(offscale) +
-            (offscale == 1 ? " point" : " points") + " off scale (arrows on the edge).";
-  }
-  if (!note.empty()) svg << text(left, chart.height - 10, note, " fill=\"#444444\" font-size=\"11\"") << "\n";
+  for (std::size_t i = 0; i < note_lines.size(); ++i)
+    svg << text(left, chart.height - 10 - 14.0 * double(note_lines.size() - 1 - i), note_lines[i],
+                " fill=\"#444444\" font-size=\"11\"")
+        << "\n";
   svg << "</svg>\n";
   return svg.str();
 }

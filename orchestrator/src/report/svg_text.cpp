@@ -58,4 +58,31 @@ double text_width_px(std::string_view markup, double font_px) {
   return width;
 }
 
+std::vector<std::string> wrap_markup(std::string_view markup, double max_px, double font_px) {
+  // Words: runs between spaces that are not inside "_{…}" / "^{…}".
+  std::vector<std::string_view> words;
+  std::size_t start = 0;
+  int depth = 0;
+  for (std::size_t i = 0; i < markup.size(); ++i) {
+    if (markup[i] == '{') ++depth;
+    if (markup[i] == '}' && depth > 0) --depth;
+    if (markup[i] != ' ' || depth > 0) continue;
+    if (i > start) words.push_back(markup.substr(start, i - start));
+    start = i + 1;
+  }
+  if (start < markup.size()) words.push_back(markup.substr(start));
+  std::vector<std::string> lines;
+  for (std::string_view w : words) {
+    if (!lines.empty()) {
+      const std::string longer = lines.back() + " " + std::string(w);
+      if (text_width_px(longer, font_px) <= max_px) {
+        lines.back() = longer;
+        continue;
+      }
+    }
+    lines.emplace_back(w);
+  }
+  return lines;
+}
+
 }  // namespace gridfree

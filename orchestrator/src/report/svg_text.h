@@ -9,15 +9,20 @@
 //   text_width_px  → estimated rendered width, used to size legends: DejaVu
 //                    Sans averages ≈ 0.62 em per character (digits 0.64 em,
 //                    lower case 0.6 em), scripts count at 75 %
+//   wrap_markup    → the text broken at spaces (never inside a script or a
+//                    word) into lines of at most max_px each; a single word
+//                    longer than max_px is a line of its own
 #pragma once
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace gridfree {
 
 std::string svg_rich_text(std::string_view markup);
 std::string plain_text(std::string_view markup);
 double text_width_px(std::string_view markup, double font_px);
+std::vector<std::string> wrap_markup(std::string_view markup, double max_px, double font_px);
 
 }  // namespace gridfree

@@ -1,6 +1,7 @@
 // CSV, Markdown and HTML renderings of a Table (see table.h).
 #include "report/table.h"
 
+#include "report/table_print_fit.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -64,7 +65,8 @@ std::string to_markdown(const Table& table) {
 }
 
 std::string to_html(const Table& table, const std::string& css_class) {
-  std::string out = "<table class=\"" + xml_escape(css_class) + "\">\n<thead><tr>";
+  // The print layout class (table_print_fit.h) rides along with the caller's.
+  std::string out = "<table class=\"" + xml_escape(css_class) + " " + print_fit_class(table) + "\">\n<thead><tr>";
   for (const auto& c : table.columns) {
     if (!c.csv_only) out += "<th>" + xml_escape(title_of(c)) + "</th>";
   }

@@ -34,7 +34,8 @@ Cell integer_cell(long long value);
 
 std::string to_csv(const Table& table);
 std::string to_markdown(const Table& table);
-// <table class="..."> with <thead>/<tbody>; cells' classes carry alignment.
+// <table class="... fit-..."> with <thead>/<tbody>; cells' classes carry
+// alignment, the fit-... class the table's print layout (table_print_fit.h).
 std::string to_html(const Table& table, const std::string& css_class = "data");
 
 }  // namespace gridfree
