@@ -130,4 +130,37 @@ inline std::vector<std::pair<double, double>> svg_circles(const std::string& svg
   return out;
 }
 
+// Segments of the drawn polylines (<path d="M x y L x y …"/>: series and
+// fit curves; grid lines, ticks and error bars use H/V and are left out).
+struct Segment {
+  double xa, ya, xb, yb;
+};
+inline std::vector<Segment> svg_polyline_segments(const std::string& svg) {
+  std::vector<Segment> out;
+  const std::regex path_re("<path d=\"(M[-0-9. ]+(?:L[-0-9. ]+)+)\"");
+  const std::regex point_re("([ML])([-0-9.]+) ([-0-9.]+)");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path_re); it != std::sregex_iterator(); ++it) {
+    const std::string d = (*it)[1];
+    bool have = false;
+    double px = 0, py = 0;
+    for (auto p = std::sregex_iterator(d.begin(), d.end(), point_re); p != std::sregex_iterator(); ++p) {
+      const double x = std::stod((*p)[2]), y = std::stod((*p)[3]);
+      if ((*p)[1] == "L" && have) out.push_back({px, py, x, y});
+      px = x, py = y, have = true;
+    }
+  }
+  return out;
+}
+
+// Whether the segment passes through the box's interior (sampled every 0.25 px).
+inline bool crosses(const Segment& s, const TextBox& b) {
+  const double len = std::hypot(s.xb - s.xa, s.yb - s.ya);
+  const int n = std::max(1, static_cast<int>(len * 4));
+  for (int i = 0; i <= n; ++i) {
+    const double t = static_cast<double>(i) / n, x = s.xa + t * (s.xb - s.xa), y = s.ya + t * (s.yb - s.ya);
+    if (x > b.x0 && x < b.x1 && y > b.y0 && y < b.y1) return true;
+  }
+  return false;
+}
+
 }  // namespace gridfree::test

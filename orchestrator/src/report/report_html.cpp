@@ -20,7 +20,7 @@ body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em aut
 h1 { font-size: 1.6em; } h2 { margin-top: 2em; border-bottom: 1px solid #ccc; } h3 { font-size: 1.05em; }
 dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1em; }
 dl.summary dt { font-weight: bold; } dl.summary dd { margin: 0; }
-nav.toc { columns: 2; font-size: 0.9em; } nav.toc ul { margin: 0.2em 0; }
+nav.toc { columns: 2; font-size: 0.9em; } nav.toc ul { margin: 0.2em 0; } nav.toc > div { break-inside: avoid; }
 .attention { background: #fff4e5; border-left: 4px solid #e69f00; padding: 0.5em 1em; }
 .scroll { overflow-x: auto; }
 table.data { border-collapse: collapse; font-size: 0.85em; margin: 0.5em 0; }
@@ -46,7 +46,7 @@ div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em;
   section:has(> .scroll > table.fit-landscape, > .scroll > table.fit-landscape-small),
   .scroll:has(> table.fit-landscape, > table.fit-landscape-small) { page: landscape; }
   table.data th, table.data td { white-space: normal; overflow-wrap: normal; word-break: normal; padding: 1px 2px; }
-  table.data td.num { white-space: nowrap; }
+  table.data td.num { white-space: nowrap; } table.data.fit-landscape-small td.num { white-space: normal; }
   table.data td.prose { min-width: 10em; }
   .charts { display: block; }
   figure { break-inside: avoid; } h2, h3 { break-after: avoid; }
@@ -97,8 +97,9 @@ std::string about_section(const ReportContent& c) {
 
 // Every section of `body` (html_toc.h) and every file beside the report, linked.
 std::string contents(const ReportContent& c, const std::string& body) {
-  std::string out = "<nav class=\"toc\"><strong>Contents</strong>\n" + toc_list_html(html_sections(body));
-  out += "<strong>Files</strong>\n<ul>\n";
+  // Two blocks that a column break never splits (a heading stays with its list).
+  std::string out = "<nav class=\"toc\"><div><strong>Contents</strong>\n" + toc_list_html(html_sections(body));
+  out += "</div><div><strong>Files</strong>\n<ul>\n";
   for (const NamedTable* t :
        {&c.series_table, &c.differences_table, &c.cost_table, &c.coverage_table, &c.gci_table, &c.failures_table,
         &c.grids_table})
@@ -111,7 +112,7 @@ std::string contents(const ReportContent& c, const std::string& body) {
   }
   out += "</ul>";
   if (!c.export_note.empty()) out += "<p class=\"note\">" + xml_escape(c.export_note) + "</p>";
-  out += "</nav>\n";
+  out += "</div></nav>\n";
   return out;
 }
 

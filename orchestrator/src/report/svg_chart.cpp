@@ -71,17 +71,40 @@ void resolve_scale(ChartAxis& axis, const std::vector<double>& values) {
   if (axis.max && *axis.max <= 0) axis.max.reset();
 }
 
-// Boxes already taken (markers, error bars, placed labels), to keep point
-// labels apart from each other and off the points; a label must also lie
-// inside the plot area.
+// Boxes already taken (markers, error bars, placed labels) and the lines
+// drawn (series, fits, reference lines), to keep point labels apart from
+// each other and off the points and lines; a label must also lie inside the
+// plot area.
 struct LabelBoxes {
   struct Box { double x0, y0, x1, y1; };
+  struct Segment { double xa, ya, xb, yb; };
   Box area;
   std::vector<Box> boxes;
+  std::vector<Segment> lines;
+  // Whether the segment passes through the box (Liang–Barsky clipping).
+  static bool crosses(const Segment& s, const Box& b) {
+    double t0 = 0, t1 = 1;
+    const double dx = s.xb - s.xa, dy = s.yb - s.ya;
+    for (const auto& [p, q] : {std::pair{-dx, s.xa - b.x0}, std::pair{dx, b.x1 - s.xa}, std::pair{-dy, s.ya - b.y0},
+                               std::pair{dy, b.y1 - s.ya}}) {
+      if (p == 0) {
+        if (q < 0) return false;
+        continue;
+      }
+      const double t = q / p;
+      if (p < 0) t0 = std::max(t0, t);
+      else t1 = std::min(t1, t);
+      if (t0 > t1) return false;
+    }
+    return true;
+  }
   bool place(const Box& b) {
     if (b.x0 < area.x0 || b.x1 > area.x1 || b.y0 < area.y0 || b.y1 > area.y1) return false;
     for (const Box& o : boxes) {
       if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return false;
+    }
+    for (const Segment& l : lines) {
+      if (crosses(l, b)) return false;
     }
     boxes.push_back(b);
     return true;
@@ -280,9 +303,17 @@ std::string render_svg(const Chart& given) {
         << " fill=\"none\"/>\n";
   }
   std::ostringstream points;
-  // Markers and error bars first, so that point labels avoid them too.
-  LabelBoxes labels{{left, top, right, bottom}, {}};
+  // Markers, error bars and lines first, so that point labels avoid them too.
+  LabelBoxes labels{{left, top, right, bottom}, {}, {}};
+  for (const auto& h : chart.hlines) {
+    if (usable(h.y, chart.y.scale)) labels.lines.push_back({left, my(h.y), right, my(h.y)});
+  }
   for (const auto& s : chart.series) {
+    for (std::size_t i = 1; s.line && i < std::min(s.x.size(), s.y.size()); ++i) {
+      if (usable(s.x[i - 1], chart.x.scale) && usable(s.y[i - 1], chart.y.scale) && usable(s.x[i], chart.x.scale) &&
+          usable(s.y[i], chart.y.scale))
+        labels.lines.push_back({mx(s.x[i - 1]), my(s.y[i - 1]), mx(s.x[i]), my(s.y[i])});
+    }
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()) && s.marker != Marker::none; ++i) {
       if (!mx.contains(s.x[i]) || !my.contains(s.y[i])) continue;
       const double x = mx(s.x[i]), y = my(s.y[i]);

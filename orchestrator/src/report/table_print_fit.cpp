@@ -25,7 +25,7 @@ double longest_word_pt(const std::string& text, double font_pt) {
 
 }  // namespace
 
-double narrowest_print_width_pt(const Table& table, double font_pt) {
+double narrowest_print_width_pt(const Table& table, double font_pt, bool numbers_break_at_spaces) {
   double total = 0;
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
     const Column& col = table.columns[c];
@@ -35,7 +35,8 @@ double narrowest_print_width_pt(const Table& table, double font_pt) {
     for (const auto& row : table.rows) {
       if (c >= row.size()) continue;
       const std::string& shown = row[c].shown;
-      width = std::max(width, col.numeric ? text_width_px(shown, font_pt) : longest_word_pt(shown, font_pt));
+      const bool whole = col.numeric && !numbers_break_at_spaces;
+      width = std::max(width, whole ? text_width_px(shown, font_pt) : longest_word_pt(shown, font_pt));
     }
     total += width + kCellPaddingPt;
   }

@@ -38,27 +38,32 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
-// A quickstart-like series on the demo's grids Δ* 2 … 0.667: 0.786 and
-// 0.667 are 0.119 apart (about 20 px on the chart), their values 0.1 apart.
+// The demo's two series on its grids Δ* 2 … 0.667: 0.786 and 0.667 are
+// 0.119 apart (about 20 px on the chart), their values 0.1 apart; the
+// second series (fou) costs 0.6 times as much, so on the speed-vs-accuracy
+// chart its front runs just under the first's.
 StudyReportData close_grids_study() {
   StudyReportData d;
   d.study_name = "close grids";
   d.status = "done";
-  SeriesData s{1, "PC1", "superbee", "bvk", "diffusion", 6, "done", {}};
-  for (double h : {2.0, 1.5, 1.0, 0.786, 0.667}) {
-    GridPoint g;
-    g.delta_star = h;
-    g.nx = static_cast<int>(std::lround(30 / h));
-    g.ny = static_cast<int>(std::lround(200 / h));
-    g.nz = static_cast<int>(std::lround(10 / h));
-    g.status = "converged";
-    g.dp_star = 1016.995 - 2.3 * std::pow(h, 1.6) + 0.01 * std::sin(7 * h);
-    g.iterations = 200;
-    g.cpu_s = 10 / (h * h * h);
-    g.wall_s = g.cpu_s / 2;
-    s.grids.push_back(g);
+  for (const char* scheme : {"superbee", "fou"}) {
+    const double cost = scheme[0] == 's' ? 1.0 : 0.6;
+    SeriesData s{scheme[0] == 's' ? 1 : 2, "PC1", scheme, "bvk", "diffusion", 6, "done", {}};
+    for (double h : {2.0, 1.5, 1.0, 0.786, 0.667}) {
+      GridPoint g;
+      g.delta_star = h;
+      g.nx = static_cast<int>(std::lround(30 / h));
+      g.ny = static_cast<int>(std::lround(200 / h));
+      g.nz = static_cast<int>(std::lround(10 / h));
+      g.status = "converged";
+      g.dp_star = 1016.995 - 2.3 * std::pow(h, 1.6) + 0.01 * std::sin(7 * h);
+      g.iterations = 200;
+      g.cpu_s = cost * 10 / (h * h * h);
+      g.wall_s = g.cpu_s / 2;
+      s.grids.push_back(g);
+    }
+    d.series.push_back(s);
   }
-  d.series = {s};
   return d;
 }
 
@@ -120,9 +125,11 @@ TEST(ReportPrintLayout, EveryReportChartKeepsItsTextInside) {
   fs::remove_all(dir);
 }
 
-// No two point labels overlap, and none covers a marker: hand-made points
-// 0.667 / 0.786 / 0.7 at nearly the same value, and Fig. 1 of a series on
-// the demo's grids with the library's extrapolation (error bars, legend).
+// No two point labels overlap, none covers a marker and no series line or
+// fit curve crosses one: hand-made points 0.667 / 0.786 / 0.7 at nearly
+// the same value, Fig. 1 of a series on the demo's grids with the
+// library's extrapolation (error bars, fit curves, legend), and the
+// speed-vs-accuracy chart of the same series (front connected by a line).
 TEST(ReportPrintLayout, PointLabelsNeitherOverlapNorCoverAPoint) {
   Chart hand;
   hand.id = "labels";
@@ -132,21 +139,25 @@ TEST(ReportPrintLayout, PointLabelsNeitherOverlapNorCoverAPoint) {
   s.point_labels = {"0.667", "0.786", "0.7"};
   hand.series.push_back(s);
   const auto summaries = summarize_series(close_grids_study(), library_extrapolator(ExtrapolatorSettings{}));
-  ASSERT_EQ(summaries.size(), 1u);
+  ASSERT_EQ(summaries.size(), 2u);
   const Chart fig1 = series_chart(summaries[0], 0);
   ASSERT_EQ(fig1.series[0].point_labels.size(), 5u);
-  for (const Chart* chart : std::initializer_list<const Chart*>{&hand, &fig1}) {
+  const Chart pareto = speed_accuracy_chart(summaries, CostMeasure::cpu_seconds);
+  for (const Chart* chart : std::initializer_list<const Chart*>{&hand, &fig1, &pareto}) {
     const std::string svg = render_svg(*chart);
     std::vector<test::TextBox> labels;
     for (const auto& b : test::svg_text_boxes(svg))
       if (b.cls == "point-label") labels.push_back(b);
-    EXPECT_GE(labels.size(), chart == &hand ? 2u : 4u) << svg;
+    EXPECT_GE(labels.size(), chart == &hand ? 2u : 3u) << svg;
     for (std::size_t i = 0; i < labels.size(); ++i) {
       for (std::size_t j = i + 1; j < labels.size(); ++j)
         EXPECT_FALSE(labels[i].overlaps(labels[j])) << labels[i].text << " overlaps " << labels[j].text;
       for (const auto& [cx, cy] : test::svg_circles(svg))
         EXPECT_FALSE(labels[i].overlaps({cx - 4, cy - 4, cx + 4, cy + 4, "", ""}))
             << labels[i].text << " covers the marker at " << cx << ", " << cy;
+      for (const auto& line : test::svg_polyline_segments(svg))
+        EXPECT_FALSE(test::crosses(line, labels[i]))
+            << labels[i].text << " is crossed by a line from " << line.xa << ", " << line.ya;
     }
     EXPECT_EQ(joined(test::texts_outside_view_box(svg)), "");
     EXPECT_EQ(joined(test::overlapping_texts(svg)), "");
@@ -216,6 +227,12 @@ TEST(ReportPrintLayout, TablesPrintPortraitLandscapeOrSmall) {
   for (auto& c : words.columns) c.numeric = false;
   EXPECT_NEAR(narrowest_print_width_pt(words, 6.5), 16 * (8 * 0.62 * 6.5 + 3.75), 1e-9);
   EXPECT_NE(to_html(table(12)).find("<table class=\"data fit-landscape\">"), std::string::npos);
+  // Small landscape lets a number cell break at its spaces (never inside a
+  // number): "1016.995" is 8 characters, 8 × 0.62 × 5 + 3.75 = 28.55 pt a
+  // column, so 27 columns (771 pt) still fit 785 pt, 28 (799 pt) do not.
+  EXPECT_NEAR(narrowest_print_width_pt(table(27), 5, true), 27 * (8 * 0.62 * 5 + 3.75), 1e-9);
+  EXPECT_LT(narrowest_print_width_pt(table(27), 5, true), 277 * 72 / 25.4);
+  EXPECT_GT(narrowest_print_width_pt(table(28), 5, true), 277 * 72 / 25.4);
 }
 
 }  // namespace
