@@ -2,7 +2,8 @@
 // markers, linear or log axes with nice ticks, axis labels, legend, title,
 // symmetric error bars, dashed horizontal reference lines.
 //
-// Output is a standalone <svg> element of fixed size (default 720×450) with
+// Output is a standalone <svg> element of fixed size (default 720×450, grown
+// for a wide legend or wrapped text, see below) with
 // no scripts, no external fonts or images, and deterministic bytes (same
 // chart, same text), so it can be inlined in HTML, linked from Markdown, and
 // compared in tests. All text is XML-escaped.
@@ -16,8 +17,14 @@
 //  - text may hold sub/superscript markup "f_{0}" (svg_text.h);
 //  - the legend column is as wide as its longest entry (never truncated):
 //    when it needs more than 280 px the chart grows wider by the excess;
-//  - point labels that would overlap an earlier label are moved to the
-//    other side of their point, or left out when both sides collide.
+//  - no text leaves the chart: title, subtitle and note wrap at spaces to
+//    the chart's width and the chart grows taller by the extra lines; an x
+//    tick label at the edge moves in; a y tick or axis label too long for
+//    its room gets a smaller font;
+//  - a point label goes to the first of six places around its point (above
+//    right, below left, above left, below right, right, left) inside the
+//    plot that no marker, error bar, earlier label or drawn line touches,
+//    and is left out when there is none.
 #pragma once
 
 #include <optional>

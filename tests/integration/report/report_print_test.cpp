@@ -46,9 +46,9 @@ fs::path write_print_study(const fs::path& dir) {
   return file;
 }
 
-bool installed(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
+bool print_tool_installed(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
 
-std::string unescaped(std::string t) {
+std::string html_text_of(std::string t) {
   for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
            {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&#39;", "'"}, {"&amp;", "&"}}) {
     for (auto at = t.find(from); at != std::string::npos; at = t.find(from, at + to.size())) t.replace(at, from.size(), to);
@@ -69,8 +69,8 @@ std::map<std::string, int> number_counts(const std::string& text) {
 }
 
 TEST(ReportPrint, EveryTableNumberIsWholeInThePdf) {
-  if (!installed("chromium")) GTEST_SKIP() << "chromium is not installed (apt-get install chromium)";
-  if (!installed("pdftotext")) GTEST_SKIP() << "pdftotext is not installed (apt-get install poppler-utils)";
+  if (!print_tool_installed("chromium")) GTEST_SKIP() << "chromium is not installed (apt-get install chromium)";
+  if (!print_tool_installed("pdftotext")) GTEST_SKIP() << "pdftotext is not installed (apt-get install poppler-utils)";
   const auto dir = gridfree::test_support::fresh_scratch_dir("report_print", "quickstart");
   const auto study = write_print_study(dir);
   const auto run = gridfree::test_support::gridfree_in(
@@ -94,7 +94,7 @@ TEST(ReportPrint, EveryTableNumberIsWholeInThePdf) {
   const std::regex cell("<td[^>]*>([^<]*)</td>");
   int cells = 0;
   for (auto it = std::sregex_iterator(html.begin(), html.end(), cell); it != std::sregex_iterator(); ++it, ++cells)
-    for (const auto& [number, n] : number_counts(unescaped((*it)[1]))) in_cells[number] += n;
+    for (const auto& [number, n] : number_counts(html_text_of((*it)[1]))) in_cells[number] += n;
   EXPECT_GT(cells, 200);  // 8 series: series, differences, cost, gci and grids tables
   EXPECT_GT(in_cells.size(), 50u);
   for (const auto& [number, n] : in_cells) {
