@@ -21,6 +21,8 @@ h1 { font-size: 1.6em; } h2 { margin-top: 2em; border-bottom: 1px solid #ccc; } 
 dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1em; }
 dl.summary dt { font-weight: bold; } dl.summary dd { margin: 0; }
 nav.toc { columns: 2; font-size: 0.9em; } nav.toc ul { margin: 0.2em 0; } nav.toc > div { break-inside: avoid; }
+nav.toc a { overflow-wrap: anywhere; }
+@media (max-width: 700px) { nav.toc { columns: 1; } }
 .attention { background: #fff4e5; border-left: 4px solid #e69f00; padding: 0.5em 1em; }
 .scroll { overflow-x: auto; }
 table.data { border-collapse: collapse; font-size: 0.85em; margin: 0.5em 0; }
@@ -28,7 +30,7 @@ table.data th, table.data td { border: 1px solid #ccc; padding: 0.2em 0.5em; whi
 table.data td.prose { white-space: normal; min-width: 18em; max-width: 36em; }
 table.data th { background: #f2f2f2; } table.data td.num { text-align: right; font-variant-numeric: tabular-nums; }
 table.data tr:nth-child(even) td { background: #fafafa; }
-.charts { display: grid; grid-template-columns: repeat(auto-fill, minmax(620px, 1fr)); gap: 0 1.5em; }
+.charts { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(620px, 100%), 1fr)); gap: 0 1.5em; }
 figure { margin: 1em 0; } figure svg { max-width: 100%; height: auto; }
 figcaption { font-size: 0.9em; color: #444; max-width: 720px; }
 p.note { font-size: 0.9em; color: #444; max-width: 900px; }
