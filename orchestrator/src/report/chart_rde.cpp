@@ -2,10 +2,11 @@
 #include "report/chart_rde.h"
 
 #include "report/chart_common.h"
+#include "report/text_format.h"
 
 namespace gridfree {
 
-Chart rde_chart(const std::vector<SeriesSummary>& series) {
+Chart rde_chart(const std::vector<SeriesSummary>& series, std::optional<double> target_rde) {
   Chart chart;
   chart.id = "fig2-rde";
   chart.title = "Relative discretization error bound RDE = U/|f_{0}|";
@@ -29,6 +30,7 @@ Chart rde_chart(const std::vector<SeriesSummary>& series) {
     }
     if (!c.x.empty()) chart.series.push_back(c);
   }
+  if (target_rde) chart.hlines.push_back({*target_rde * 100.0, "target RDE " + format_percent(*target_rde), 6, true});
   if (chart.series.empty()) chart.note = "No series has an uncertainty yet (needs 4 converged grids).";
   return chart;
 }

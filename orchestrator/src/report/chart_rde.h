@@ -4,6 +4,7 @@
 // decade (chart_axis.h scale_for_span).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "report/series_summary.h"
@@ -11,6 +12,8 @@
 
 namespace gridfree {
 
-Chart rde_chart(const std::vector<SeriesSummary>& series);
+// With a target (the study's grids.target_rde, a fraction), a dashed black
+// line at it, labelled "target RDE …".
+Chart rde_chart(const std::vector<SeriesSummary>& series, std::optional<double> target_rde = std::nullopt);
 
 }  // namespace gridfree

@@ -5,11 +5,11 @@
 
 namespace gridfree {
 
-std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series) {
+std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde) {
   std::vector<NamedChart> out;
   out.push_back({"fig2_rde.svg",
                  "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
-                 rde_chart(series), {}});
+                 rde_chart(series, target_rde), {}});
   // The speed-accuracy charts recommend grids: written only when a converged
   // series has a front to draw (chart_pareto.h).
   Chart cpu = speed_accuracy_chart(series, CostMeasure::cpu_seconds);

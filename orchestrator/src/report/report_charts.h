@@ -6,6 +6,7 @@
 //   gci_NN_<series>.svg         chart_gci.h
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct NamedChart {
 
 // All charts of a report: the overview charts, then per series its Fig. 1
 // chart and (when it has GCI triplets) its GCI chart.
-std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series);
+std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series,
+                                      std::optional<double> target_rde = std::nullopt);
 
 }  // namespace gridfree

@@ -40,7 +40,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.coverage_table = {"coverage.csv", "Coverage self-check", coverage_table(c.series)};
   c.alignment = alignment_lines(data.alignment, c.series);
   c.alignment_table = {"alignment.csv", "Alignment check", alignment_table(c.alignment)};
-  c.charts = report_charts(c.series);
+  c.charts = report_charts(c.series, data.target_rde);
   c.ensembles = ensemble_section(c.series, data.ensembles);
   return c;
 }

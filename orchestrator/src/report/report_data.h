@@ -42,6 +42,7 @@ struct StudyReportData {
   std::string extrapolation_method = "capped";  // capped | fm | eh14
   double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
   std::vector<std::string> generator_kinds;
+  std::optional<double> target_rde;  // the study's grids.target_rde (adaptive grids), drawn on the RDE chart
   bool export_charts = true;         // PDF/PNG beside every SVG (report/chart_export.h)  // particle generators of the study's cases (report_about.h)
   std::vector<SeriesData> series;
   std::vector<std::string> adaptive_decisions;  // adaptive series: every decision in order (report/adaptive_section.h)

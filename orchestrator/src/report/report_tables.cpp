@@ -235,13 +235,13 @@ Table coverage_table(const std::vector<SeriesSummary>& series) {
   t.columns = {text_col("series"),
                text_col("verdict"),
                num_col("grids", "ng"),
-               num_col("reference", "f0 (all grids)"),
-               num_col("windows", "windows"),
-               num_col("covered_u1", "f1 ± U1 covers"),
-               num_col("covered_u0", "f0 ± U0 covers"),
-               num_col("coverage", "coverage (U1)"),
-               num_col("worst", "largest miss / U1"),
-               text_col("status"),
+               num_col("reference", "f0 (all grids)", true),
+               num_col("windows"),
+               num_col("covered_u1", "U1 covers"),
+               num_col("covered_u0", "U0 covers"),
+               num_col("coverage"),
+               num_col("worst", "max miss/U1"),
+               text_col("status", {}, true),
                prose_col("missed", "windows that missed (Δ* coarse–fine)")};
   for (const auto& s : series) {
     if (!s.coverage) continue;

@@ -101,27 +101,45 @@ ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_
   return s;
 }
 
+std::string chosen_fit_name(const std::string& method) {
+  if (method == "capped_power") return "capped";
+  if (method.rfind("eh14_", 0) == 0) {  // eh14_<fit>_<weighting>
+    const auto end = method.find('_', 5);
+    return method.substr(5, end == std::string::npos ? std::string::npos : end - 5);
+  }
+  return method;  // power | mixed | constant
+}
+
 void extrapolation_rows(const nlohmann::json& ex, const std::vector<SeriesPoint>& points,
                         std::vector<ExtrapolationRow>& fits, std::vector<UncertaintyRow>& uncertainties) {
   const std::string status = ex.value("status", std::string("unknown"));
   const std::string method = ex.contains("method") && ex["method"].is_string() ? ex["method"].get<std::string>() : "";
   const nlohmann::json fit_obj = ex.contains("fits") && ex["fits"].is_object() ? ex["fits"] : nlohmann::json::object();
-  for (const char* m : {"power", "mixed"}) {
+  // One row per fit the extrapolation reports (power and mixed always; capped,
+  // first and second when made), `chosen` on the one f0 comes from; constant
+  // data get a row of their own.
+  const std::string chosen_fit = chosen_fit_name(method);
+  std::vector<std::string> names = {"power", "mixed"};
+  for (const char* extra : {"capped", "first", "second"})
+    if (fit_obj.contains(extra)) names.push_back(extra);
+  if (method == "constant") names.push_back("constant");
+  for (const std::string& m : names) {
     ExtrapolationRow r;
     r.method = m;
-    const nlohmann::json f = fit_obj.contains(m) ? fit_obj[m] : nlohmann::json::object();
+    nlohmann::json f = fit_obj.contains(m) ? fit_obj[m] : nlohmann::json::object();
+    if (m == "constant") f = {{"f0", ex.value("f0", nlohmann::json())}, {"sigma", 0.0}};
     r.f0 = num(f, "f0");
     r.p = num(f, "p");
     r.c = num(f, "c");
     r.c1 = num(f, "c1");
     r.c2 = num(f, "c2");
     r.sigma_re = num(f, "sigma");
-    if (method == m && num(ex, "sigma_re")) r.sigma_re = num(ex, "sigma_re");
+    if (chosen_fit == m && num(ex, "sigma_re")) r.sigma_re = num(ex, "sigma_re");
     r.data_range = num(ex, "data_range");
     r.fs = num(ex, "fs");
-    r.chosen = method == m;
+    r.chosen = chosen_fit == m;
     r.status = status;
-    if (std::string(m) == "power" && f.contains("p_found") && f["p_found"].is_boolean() && !f["p_found"].get<bool>())
+    if (m == "power" && f.contains("p_found") && f["p_found"].is_boolean() && !f["p_found"].get<bool>())
       r.status += " (p not found)";
     r.detail_json = f.dump();
     fits.push_back(std::move(r));
@@ -199,7 +217,10 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   d.extrapolation_method = settings.method;
   d.p_low = settings.p_low;
   d.p_high = settings.p_high;
-  d.generator_kinds = generator_kinds(store.study_definition(study_id));
+  const nlohmann::json definition = store.study_definition(study_id);
+  d.generator_kinds = generator_kinds(definition);
+  const nlohmann::json target = definition.value("/grids/target_rde"_json_pointer, nlohmann::json());
+  if (target.is_number()) d.target_rde = target.get<double>();
   for (const auto& e : adaptive_events(store, study_id)) d.adaptive_decisions.push_back(e.message);
   d.ensembles = study_ensembles(store.db(), study_id);
   for (const auto& s : store.series_of_study(study_id)) {

@@ -1,6 +1,6 @@
 // What happens when a series' last job finishes: extrapolate its converged
 // points (h = Δ*, f = dp_star; PHYSICS.md §8, through the report's
-// Extrapolator seam), store both fits ('power' and 'mixed', `chosen` on the
+// Extrapolator seam), store its fits (one row each, `chosen` on the
 // selected one) and one uncertainty row per converged job, mark it done.
 // Also: the study report, rebuilt from the store.
 #pragma once
@@ -19,7 +19,13 @@ namespace gridfree {
 // Extrapolation settings of a stored study (its definition's "extrapolation").
 ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_id);
 
-// Splits the contract extrapolation JSON (docs/INTERFACE.md §4) into rows; grids
+// The `extrapolations.method` row f0 comes from: "capped" for capped_power,
+// the fit's name for eh14_<fit>_<weighting>, else the method itself.
+std::string chosen_fit_name(const std::string& method);
+
+// Splits the contract extrapolation JSON (docs/INTERFACE.md §4) into rows, one
+// per reported fit (power, mixed, and capped/first/second when present;
+// "constant" for constant data), `chosen` on chosen_fit_name(method); grids
 // are matched to jobs by h.
 void extrapolation_rows(const nlohmann::json& ex, const std::vector<SeriesPoint>& points,
                         std::vector<ExtrapolationRow>& fits, std::vector<UncertaintyRow>& uncertainties);

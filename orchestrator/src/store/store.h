@@ -81,7 +81,7 @@ struct SeriesPoint {             // one job of a series, with its result if any
 };
 
 struct ExtrapolationRow {
-  std::string method;            // power | mixed
+  std::string method;            // power | mixed | capped | first | second | constant
   std::optional<double> f0, p, c, c1, c2, sigma_re, data_range, fs;
   bool chosen = false;
   std::string status;            // ok | insufficient_grids | p_not_found ...

@@ -267,5 +267,17 @@ TEST(ChartRules, NoSpeedAccuracyChartWithoutAConvergedSeries) {
             }), 2);
 }
 
+// The study's target RDE (adaptive grids) is drawn on the RDE chart as a
+// dashed black line at the target, in percent; without a target, no line.
+TEST(ChartRules, TheRdeChartDrawsTheStudysTarget) {
+  const auto s = test::synthetic_summaries();
+  EXPECT_TRUE(rde_chart(s).hlines.empty());
+  const Chart with = rde_chart(s, 0.002);
+  ASSERT_EQ(with.hlines.size(), 1u);
+  EXPECT_DOUBLE_EQ(with.hlines[0].y, 0.2);
+  EXPECT_NE(with.hlines[0].label.find("target RDE 0.2"), std::string::npos) << with.hlines[0].label;
+  EXPECT_TRUE(with.hlines[0].dashed);
+}
+
 }  // namespace
 }  // namespace gridfree

@@ -74,7 +74,7 @@ TEST(ReportCoverage, TheHtmlHasTheSectionAndItsReadingNote) {
   const std::string html = render_html(content_with("fm"));
   EXPECT_NE(html.find("id=\"coverage\""), std::string::npos);
   EXPECT_NE(html.find("Coverage self-check"), std::string::npos);
-  EXPECT_NE(html.find("below promise"), std::string::npos);
+  EXPECT_NE(html.find("below the 95 %"), std::string::npos);
 }
 
 }  // namespace
