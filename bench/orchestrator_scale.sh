@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
 # The orchestrator's own cost per job as studies grow: `gridfree run` of a
 # study of K cases × 6 drag laws × the paper's 18 grids (108·K jobs) with a
-# worker that answers at once (tests/fixtures/fake_worker.sh through
-# GRIDFREE_WORKER), so what is measured is the orchestrator: claims,
-# records, progress, series extrapolations and reports.
+# worker that answers at once (through GRIDFREE_WORKER), so what is
+# measured is the orchestrator: claims, records, progress, series
+# extrapolations and reports.
 #
 #   bench/orchestrator_scale.sh BIN_DIR [K ...]     (default K: 1 10)
+#
+# BENCH_WORKER=instant (default): bench/instant_worker.c, compiled here with
+# cc, one small process per job; BENCH_WORKER=shell: tests/fixtures/
+# fake_worker.sh (a few processes per job, about 0.2 s of a slot each, so
+# near 10 jobs/s at -j 2 at most). BENCH_J: jobs at once (default 2).
 #
 # Prints per size: jobs, wall s, jobs/s, the orchestrator's own CPU (user +
 # system of the `gridfree` process alone, read from /proc every 0.1 s, so
@@ -23,6 +28,13 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 tick=$(getconf CLK_TCK)
+jobs_at_once=${BENCH_J:-2}
+case ${BENCH_WORKER:-instant} in
+  instant) worker="$work/instant_worker"
+           cc -O2 -o "$worker" "$here/bench/instant_worker.c" -lm ;;
+  shell) worker="$here/tests/fixtures/fake_worker.sh" ;;
+  *) echo "BENCH_WORKER: instant or shell, not '${BENCH_WORKER}'" >&2; exit 2 ;;
+esac
 
 study_of() {  # K → a study document on stdout
   python3 - "$here/studies/quickstart.json" "$1" <<'EOF'
@@ -51,8 +63,8 @@ for k in "${sizes[@]}"; do
   study_of "$k" > "$dir/study.json"
   jobs=$((108 * k))
   start=$(date +%s.%N)
-  (cd "$dir" && GRIDFREE_WORKER="$here/tests/fixtures/fake_worker.sh" \
-     "$bin/gridfree" run study.json --db "$dir/db.sqlite" -j 2 > "$dir/run.log" 2>&1) &
+  (cd "$dir" && GRIDFREE_WORKER="$worker" \
+     "$bin/gridfree" run study.json --db "$dir/db.sqlite" -j "$jobs_at_once" > "$dir/run.log" 2>&1) &
   runner=$!
   pid=""
   cpu=0

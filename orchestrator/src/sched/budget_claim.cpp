@@ -1,6 +1,9 @@
 // Budgeted claims (sched/budget_claim.h).
 #include "sched/budget_claim.h"
 
+#include <algorithm>
+#include <array>
+
 #include "job/memory_estimate.h"
 
 namespace gridfree {
@@ -8,21 +11,55 @@ namespace gridfree {
 // Jobs of one grid size need the same memory, so the rule (sched/budget.h)
 // only ever picks the first of each size in queue order: one row per study
 // and size is read, not the whole queue (tens of thousands of jobs in an
-// ensemble study, and a claim for every start).
+// ensemble study, and a claim for every start). Both steps are seeks in the
+// index jobs(status, nx, ny, nz, id) (schema step 9): the queued sizes one
+// after the other (a loose index scan), then per size and study its first
+// queued job, found at the front of the size's queue when one study runs.
 std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study) {
-  auto st = store.db().prepare(
-      "SELECT MIN(j.id), j.nx, j.ny, j.nz FROM jobs j JOIN study_jobs sj ON sj.job_id = j.id "
-      "JOIN studies s ON s.id = sj.study_id "
-      "WHERE j.status = 'queued' AND s.status IN ('queued','running') AND (?1 IS NULL OR s.id = ?1) "
-      "GROUP BY s.id, j.nx, j.ny, j.nz "
-      "ORDER BY s.id, MAX(j.cells) DESC, MIN(j.id)");
-  st.bind_all(study);
-  std::vector<QueuedJob> out;
-  while (st.step()) {
-    const std::array<int, 3> cells{static_cast<int>(st.as_int(1)), static_cast<int>(st.as_int(2)),
-                                   static_cast<int>(st.as_int(3))};
-    out.push_back({st.as_int(0), job_memory_estimate_bytes(cells)});
+  std::vector<std::array<long long, 3>> sizes;
+  {
+    auto next = store.db().prepare(
+        "SELECT nx, ny, nz FROM jobs INDEXED BY jobs_queue WHERE status = 'queued' AND (nx, ny, nz) > (?, ?, ?) "
+        "ORDER BY nx, ny, nz LIMIT 1");
+    std::array<long long, 3> after{-1, -1, -1};
+    for (;;) {
+      next.reset();
+      next.bind_all(after[0], after[1], after[2]);
+      if (!next.step()) break;
+      after = {next.as_int(0), next.as_int(1), next.as_int(2)};
+      sizes.push_back(after);
+    }
   }
+  std::vector<long long> studies = store.active_studies();
+  if (study) studies.erase(std::remove_if(studies.begin(), studies.end(), [&](long long id) { return id != *study; }),
+                           studies.end());
+  // The size's queued jobs in id order, each checked for the study by its
+  // job_id ("+": not through the study's index, which reads all its rows).
+  auto first = store.db().prepare(
+      "SELECT j.id FROM jobs j INDEXED BY jobs_queue "
+      "WHERE j.status = 'queued' AND j.nx = ? AND j.ny = ? AND j.nz = ? "
+      "AND EXISTS (SELECT 1 FROM study_jobs sj WHERE sj.job_id = j.id AND +sj.study_id = ?) "
+      "ORDER BY j.id LIMIT 1");
+  struct Row {
+    long long study, cells, id;
+    std::array<int, 3> size;
+  };
+  std::vector<Row> rows;
+  for (long long id : studies)
+    for (const auto& z : sizes) {
+      first.reset();
+      first.bind_all(z[0], z[1], z[2], id);
+      if (!first.step()) continue;
+      const std::array<int, 3> cells{static_cast<int>(z[0]), static_cast<int>(z[1]), static_cast<int>(z[2])};
+      rows.push_back({id, z[0] * z[1] * z[2], first.as_int(0), cells});
+    }
+  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
+    if (a.study != b.study) return a.study < b.study;
+    if (a.cells != b.cells) return a.cells > b.cells;
+    return a.id < b.id;
+  });
+  std::vector<QueuedJob> out;
+  for (const auto& r : rows) out.push_back({r.id, job_memory_estimate_bytes(r.size)});
   return out;
 }
 

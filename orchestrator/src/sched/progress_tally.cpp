@@ -14,17 +14,19 @@ void ProgressTally::recount(double now) {
   counts_ = sources_.count();
   counts_.eta_s = eta;
   counted_at_ = now;
+  count_cost_s_ = std::max(0.0, sources_.now_s() - now);
 }
 
 void ProgressTally::reprice(double now) {
   counts_.eta_s = sources_.eta ? sources_.eta() : std::nullopt;
   priced_at_ = now;
+  eta_cost_s_ = std::max(0.0, sources_.now_s() - now);
 }
 
 ProgressCounts ProgressTally::current() {
   const double now = sources_.now_s();
-  if (!counted_at_ || now - *counted_at_ >= recount_s_) recount(now);
-  if (!priced_at_ || now - *priced_at_ >= eta_s_) reprice(now);
+  if (!counted_at_ || now - *counted_at_ >= std::max(recount_s_, kCostFactor * count_cost_s_)) recount(now);
+  if (!priced_at_ || now - *priced_at_ >= std::max(eta_s_, kCostFactor * eta_cost_s_)) reprice(now);
   return counts_;
 }
 

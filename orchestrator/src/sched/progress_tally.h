@@ -9,7 +9,10 @@
 // done + 1; any other final outcome: running − 1, failed + 1; a requeue:
 // running − 1), as the store counts jobs `done` and `failed`; other
 // processes' work shows at the next recount. `exact()` recounts now (the
-// last line of a run).
+// last line of a run). A count or price that takes long (both read the
+// whole study) waits kCostFactor times its own duration before the next,
+// so each takes at most about 1/kCostFactor of the loop's time however
+// large the study.
 #pragma once
 
 #include <functional>
@@ -26,6 +29,7 @@ class ProgressTally {
     std::function<std::optional<double>()> eta;     // the ETA in seconds, when it can be priced
     std::function<double()> now_s;                  // a monotonic clock in seconds
   };
+  static constexpr double kCostFactor = 20;
   ProgressTally(Sources sources, double recount_s = 1.0, double eta_s = 10.0);
 
   ProgressCounts current();  // recounted (and re-priced) when stale
@@ -43,6 +47,7 @@ class ProgressTally {
   double recount_s_, eta_s_;
   ProgressCounts counts_;
   std::optional<double> counted_at_, priced_at_;
+  double count_cost_s_ = 0, eta_cost_s_ = 0;  // duration of the last count and price
 };
 
 }  // namespace gridfree

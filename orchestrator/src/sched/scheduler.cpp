@@ -21,6 +21,7 @@
 #include "sched/series_finish.h"
 #include "sched/study_status.h"
 #include "store/owner.h"
+#include "study/adaptive_grids.h"
 
 namespace gridfree {
 namespace {
@@ -108,13 +109,38 @@ ProgressTally progress_tally(Store& store, const SchedulerOptions& o) {
   return ProgressTally(std::move(sources));
 }
 
+// What the loop needs from a study's definition, parsed once per study and
+// process (a definition grows with its cases; parsing it per job would
+// make the cost per job grow with the study).
+struct StudyFacts {
+  std::optional<double> timeout_s;  // the definition's timeout_s
+  bool adaptive = false;            // adaptive grids (study/adaptive_grids.h)
+};
+
+class StudyFactsCache {
+ public:
+  explicit StudyFactsCache(Store& store) : store_(store) {}
+  const StudyFacts& of(long long study_id) {
+    auto it = facts_.find(study_id);
+    if (it != facts_.end()) return it->second;
+    StudyFacts f;
+    const nlohmann::json d = store_.study_definition(study_id);
+    if (d.is_object())
+      if (const auto t = d.find("timeout_s"); t != d.end() && t->is_number()) f.timeout_s = t->get<double>();
+    f.adaptive = adaptive_grids_of(d).has_value();
+    return facts_.emplace(study_id, f).first->second;
+  }
+
+ private:
+  Store& store_;
+  std::map<long long, StudyFacts> facts_;
+};
+
 // A job's wall-clock limit: --timeout when given (0 = none), else the
 // study's timeout_s, else the default derived from the cost model.
-double job_timeout_s(const SchedulerOptions& o, Store& store, const ClaimedJob& job) {
+double job_timeout_s(const SchedulerOptions& o, const StudyFacts& facts, const ClaimedJob& job) {
   if (o.timeout_s >= 0) return o.timeout_s;
-  const nlohmann::json d = store.study_definition(job.study_id);
-  if (d.is_object())
-    if (const auto t = d.find("timeout_s"); t != d.end() && t->is_number()) return t->get<double>();
+  if (facts.timeout_s) return *facts.timeout_s;
   return default_job_timeout_s(job.cells, o.threads_per_job, apriori_cost_ratio(job.spec, job.cells).ratio);
 }
 
@@ -158,6 +184,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
   const BudgetPolicy policy{o.memory_budget_bytes, o.workers, std::max(1, o.workers)};
   HeadReservation reservation;
   ProgressTally tally = progress_tally(store, o);
+  StudyFactsCache facts(store);
   auto record_updates = [&] {
     for (const auto& u : executor.take_updates()) store.set_queue_state(u.job_id, u.external_id, u.state, u.reason);
   };
@@ -181,6 +208,16 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     }
     write_reports(false);
   };
+  // After a job's final result: only the series of that job can have become
+  // ready (sched/series_finish.h).
+  auto sweep_job = [&](long long job_id) {
+    for (long long id : o.study ? std::vector<long long>{*o.study} : studies_of_job(store, job_id)) {
+      const int n = finish_series_of_job(store, id, job_id, facts.of(id).adaptive);
+      sum.series_finished += n;
+      if (n > 0) pacer.series_finished(id);
+    }
+    write_reports(false);
+  };
   sweep(o.study ? std::vector<long long>{*o.study} : store.active_studies());
 
   for (;;) {
@@ -197,7 +234,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
       launch.threads = o.threads_per_job;
-      launch.timeout_s = job_timeout_s(o, store, *job);
+      launch.timeout_s = job_timeout_s(o, facts.of(job->study_id), *job);
       launch.cells = job->cells;
       launch.name = job_name(store, *job, f.label);
       try {
@@ -277,7 +314,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       what += "released: " + out.row.reason;
     }
     if (o.progress) o.progress->job_finished(what, tally.current());
-    sweep(o.study ? std::vector<long long>{*o.study} : studies_of_job(store, f.job.job_id));
+    sweep_job(f.job.job_id);
   }
 
   if (o.stop_requested()) {

@@ -202,6 +202,21 @@ int finish_ready_series(Store& store, long long study_id) {
   return finished;
 }
 
+int finish_series_of_job(Store& store, long long study_id, long long job_id, bool adaptive) {
+  if (adaptive) return finish_ready_series(store, study_id);
+  int finished = 0;
+  const auto ready = store.series_ready_of_job(study_id, job_id);
+  if (!ready.empty()) {
+    const Extrapolator extrapolate = library_extrapolator(study_extrapolation_settings(store, study_id));
+    for (const auto& s : ready) {
+      finish_series(store, s, extrapolate);
+      ++finished;
+    }
+  }
+  store.refresh_study_status(study_id);
+  return finished;
+}
+
 StudyReportData build_report_data(Store& store, long long study_id) {
   StudyReportData d;
   const auto st = store.statuses(study_id);

@@ -37,6 +37,12 @@ nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extra
 // Returns the number of series finished.
 int finish_ready_series(Store& store, long long study_id);
 
+// After one job's final result: finishes the series of that job that it made
+// ready (an index lookup, whatever the study's size) and refreshes the
+// study's status. An adaptive study (`adaptive`: its definition has
+// adaptive grids) is swept whole, as its decisions may add jobs.
+int finish_series_of_job(Store& store, long long study_id, long long job_id, bool adaptive);
+
 // Everything the report shows, from the store.
 StudyReportData build_report_data(Store& store, long long study_id);
 

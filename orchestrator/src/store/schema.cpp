@@ -1,6 +1,7 @@
-// Schema version 8 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
+// Schema version 9 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
 // state; 4: series verdicts; 5: series transfer columns; 6: alignment check;
-// 7: adaptive series; 8: ensembles). Status words (docs/INTERFACE.md §5):
+// 7: adaptive series; 8: ensembles; 9: indexes for
+// the scheduler at ensemble scale). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -279,6 +280,15 @@ ALTER TABLE series ADD COLUMN adaptive_status TEXT
 ALTER TABLE series ADD COLUMN adaptive_note TEXT;
 )sql";
 
+// Step 9 — indexes for the scheduler's per-job questions at ensemble scale
+// (tens of thousands of jobs): is a series of the study still open
+// (Store::refresh_study_status), and the first queued job of each grid
+// size (sched/budget_claim.cpp).
+constexpr const char* kV9ScaleIndexes = R"sql(
+CREATE INDEX series_study_status ON series(study_id, status);
+CREATE INDEX jobs_queue ON jobs(status, nx, ny, nz, id);
+)sql";
+
 // Foreign keys off for the migration's transaction, on again afterwards
 // (also when a step throws).
 struct ForeignKeysOff {
@@ -324,6 +334,7 @@ void migrate(Database& db, int target) {
   if (v < 6 && target >= 6) migrate_alignment(db);        // alignment check (schema_alignment.cpp)
   if (v < 7 && target >= 7) db.exec(kV7AdaptiveSeries);
   if (v < 8 && target >= 8) db.exec(kV8Ensembles);  // ensembles (store/schema_ensembles.h)
+  if (v < 9 && target >= 9) db.exec(kV9ScaleIndexes);
   if (v < 5 && target >= 5) {
     auto fk = db.prepare("PRAGMA foreign_key_check");
     if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);

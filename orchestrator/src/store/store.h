@@ -183,6 +183,9 @@ class Store {
   // Series whose jobs have all reached done/failed/cancelled but which are
   // not marked done yet (ready for extrapolation).
   std::vector<SeriesInfo> series_ready(long long study_id);
+  // The same, among the series the job belongs to (in the study): what one
+  // finished job can make ready, at a cost independent of the study's size.
+  std::vector<SeriesInfo> series_ready_of_job(long long study_id, long long job_id);
   std::vector<SeriesInfo> series_of_study(long long study_id);
   std::vector<SeriesPoint> series_points(long long series_id);
 

@@ -56,13 +56,15 @@ std::vector<long long> Store::active_studies() {
 std::optional<ClaimedJob> Store::claim_next(std::optional<long long> study, const std::string& owner,
                                             std::optional<long long> only_job) {
   Transaction tx(db_);
-  auto st = db_.prepare(
+  // With the job named, a lookup by its id (an "?2 IS NULL OR" would make
+  // SQLite read the whole queue to find it).
+  const std::string columns =
       "SELECT j.id, sj.study_id, j.job_hash, j.spec_json, j.attempts, j.nx, j.ny, j.nz "
       "FROM jobs j JOIN study_jobs sj ON sj.job_id = j.id "
       "JOIN studies s ON s.id = sj.study_id JOIN series se ON se.id = sj.series_id "
-      "WHERE j.status = 'queued' AND s.status IN ('queued','running') AND (?1 IS NULL OR s.id = ?1) "
-      "AND (?2 IS NULL OR j.id = ?2) "
-      "ORDER BY s.id, se.position, j.cells DESC, j.id LIMIT 1");
+      "WHERE j.status = 'queued' AND s.status IN ('queued','running') AND (?1 IS NULL OR s.id = ?1) ";
+  auto st = db_.prepare(columns + (only_job ? "AND j.id = ?2 " : "AND ?2 IS NULL ") +
+                        "ORDER BY s.id, se.position, j.cells DESC, j.id LIMIT 1");
   st.bind_all(study ? std::optional<long long>(*study) : std::optional<long long>(), only_job);
   if (!st.step()) return std::nullopt;
   ClaimedJob job;

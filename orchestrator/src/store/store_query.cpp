@@ -45,6 +45,21 @@ std::vector<SeriesInfo> Store::series_ready(long long study_id) {
   return out;
 }
 
+std::vector<SeriesInfo> Store::series_ready_of_job(long long study_id, long long job_id) {
+  // "+study_id": look the job's rows up by job_id (study_jobs_job), not by
+  // study, which would read every row of the study.
+  std::vector<SeriesInfo> out;
+  auto st = db_.prepare(std::string(kSeriesColumns) +
+                        "WHERE id IN (SELECT series_id FROM study_jobs WHERE job_id = ?2 AND +study_id = ?1) "
+                        "AND status IN ('queued','running') AND NOT EXISTS ("
+                        " SELECT 1 FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id"
+                        " WHERE sj.series_id = series.id AND sj.alignment_only = 0 AND j.status IN ('queued','running')) "
+                        "ORDER BY position");
+  st.bind_all(study_id, job_id);
+  while (st.step()) out.push_back(read_series(st));
+  return out;
+}
+
 std::vector<SeriesPoint> Store::series_points(long long series_id) {
   std::vector<SeriesPoint> out;
   auto st = db_.prepare(
@@ -137,29 +152,43 @@ std::vector<UncertaintyRow> Store::uncertainties(long long series_id) {
   return out;
 }
 
+// While a series is open the answer needs two index probes (schema step 9's
+// series(study_id, status); study_jobs by study, whose first rows are the
+// first claimed), not a count of the study's jobs: the scheduler asks after
+// every job. Only when no series is open are the jobs counted (once, at the
+// study's end).
 std::string Store::refresh_study_status(long long study_id) {
   Transaction tx(db_);
-  auto st = db_.prepare(
+  auto open = db_.prepare(
       "SELECT s.status, "
-      " (SELECT COUNT(*) FROM series WHERE study_id = s.id AND status NOT IN ('done','cancelled')), "
-      " (SELECT COUNT(*) FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id "
-      "   WHERE sj.study_id = s.id AND j.status IN ('queued','running')), "
-      " (SELECT COUNT(*) FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id "
-      "   WHERE sj.study_id = s.id AND j.status <> 'done'), "
-      " (SELECT COUNT(*) FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id "
+      " EXISTS (SELECT 1 FROM series WHERE study_id = s.id AND status IN ('queued','running','failed')), "
+      " EXISTS (SELECT 1 FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id "
       "   WHERE sj.study_id = s.id AND j.status <> 'queued') "
       "FROM studies s WHERE s.id = ?");
-  st.bind_all(study_id);
-  if (!st.step()) return "";
-  std::string status = st.as_text(0);
+  open.bind_all(study_id);
+  if (!open.step()) return "";
+  const std::string status = open.as_text(0);
   if (status == "cancelled") return status;
-  const long long open_series = st.as_int(1), open_jobs = st.as_int(2), not_done = st.as_int(3),
-                  started = st.as_int(4);
   std::string next;
-  if (open_series == 0 && open_jobs == 0)
-    next = not_done == 0 ? "done" : "failed";
-  else
-    next = started > 0 ? "running" : "queued";
+  if (open.as_int(1) != 0) {
+    next = open.as_int(2) != 0 ? "running" : "queued";
+  } else {
+    auto st = db_.prepare(
+        "SELECT "
+        " (SELECT COUNT(*) FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id "
+        "   WHERE sj.study_id = ?1 AND j.status IN ('queued','running')), "
+        " (SELECT COUNT(*) FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id "
+        "   WHERE sj.study_id = ?1 AND j.status <> 'done'), "
+        " (SELECT COUNT(*) FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id "
+        "   WHERE sj.study_id = ?1 AND j.status <> 'queued')");
+    st.bind_all(study_id);
+    st.step();
+    const long long open_jobs = st.as_int(0), not_done = st.as_int(1), started = st.as_int(2);
+    if (open_jobs == 0)
+      next = not_done == 0 ? "done" : "failed";
+    else
+      next = started > 0 ? "running" : "queued";
+  }
   if (next != status) {
     const bool final_state = next == "done" || next == "failed";
     db_.prepare(final_state ? "UPDATE studies SET status = ?, finished_at = strftime('%Y-%m-%dT%H:%M:%fZ','now') WHERE id = ?"

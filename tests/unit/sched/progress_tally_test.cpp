@@ -94,5 +94,32 @@ TEST(ProgressTally, RequeuesOnlyFreeTheRunningSlot) {
   EXPECT_EQ(c.done + c.failed, 0);
 }
 
+TEST(ProgressTally, ACostlyCountWaitsTwentyTimesItsDuration) {
+  TallyProbe probe;
+  double count_s = 2.0;  // each count of the store takes 2 s (a very large study)
+  ProgressTally::Sources s;
+  s.count = [&] {
+    ++probe.counted;
+    probe.clock += count_s;
+    return probe.stored;
+  };
+  s.now_s = [&] { return probe.clock; };
+  ProgressTally tally(std::move(s), 1.0, 10.0);
+  tally.current();  // counted from 0 to 2 s
+  EXPECT_EQ(probe.counted, 1);
+  probe.clock = 0 + 39.9;  // 20 × 2 s after the count started, minus a little
+  tally.current();
+  EXPECT_EQ(probe.counted, 1);
+  probe.clock = 40.0;
+  tally.current();
+  EXPECT_EQ(probe.counted, 2);
+  count_s = 0;  // cheap again: back to once a second
+  probe.clock = 80.0;
+  tally.current();
+  probe.clock = 81.0;
+  tally.current();
+  EXPECT_EQ(probe.counted, 4);
+}
+
 }  // namespace
 }  // namespace gridfree
