@@ -31,7 +31,8 @@ void remove_run_folders(const std::filesystem::path& db, const std::vector<std::
   for (const auto& hash : job_hashes) {
     if (hash.empty() || hash.find('/') != std::string::npos || hash.find("..") != std::string::npos) continue;
     std::error_code ec;
-    std::filesystem::remove_all(root / hash, ec);
+    std::filesystem::remove_all(root / hash, ec);  // the flat layout of older versions
+    std::filesystem::remove_all(run_dir_for(root, hash), ec);
   }
 }
 

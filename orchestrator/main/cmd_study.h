@@ -26,7 +26,8 @@ void add_report_command(CLI::App& app, int& exit_code);
 void add_cancel_command(CLI::App& app, int& exit_code);
 void add_delete_command(CLI::App& app, int& exit_code);
 
-// Removes the run folders (<db>.runs/<job_hash>) of jobs the store removed.
+// Removes the run folders (exec/executor.h run_dir_for, sharded or flat) of
+// jobs the store removed.
 void remove_run_folders(const std::filesystem::path& db, const std::vector<std::string>& job_hashes);
 void add_retry_command(CLI::App& app, int& exit_code);
 

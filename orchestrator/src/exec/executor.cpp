@@ -54,9 +54,17 @@ std::filesystem::path runs_root_for(const std::filesystem::path& db_file) {
   return abs.parent_path() / (abs.filename().string() + ".runs");
 }
 
+std::filesystem::path run_dir_for(const std::filesystem::path& runs_root, const std::string& job_hash) {
+  const auto flat = runs_root / job_hash;
+  if (job_hash.size() < 3 || job_hash.find_first_of("/\\.") != std::string::npos) return flat;
+  std::error_code ec;
+  if (std::filesystem::is_directory(flat, ec)) return flat;
+  return runs_root / job_hash.substr(0, 2) / job_hash;
+}
+
 std::filesystem::path prepare_run_dir(const std::filesystem::path& runs_root, const std::string& job_hash,
                                       const std::string& job_json) {
-  const auto dir = runs_root / job_hash;
+  const auto dir = run_dir_for(runs_root, job_hash);
   std::filesystem::create_directories(dir);
   std::filesystem::remove(dir / "result.json");
   const auto tmp = dir / "job.json.tmp";

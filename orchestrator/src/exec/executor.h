@@ -86,8 +86,15 @@ class Executor {
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
                                         int threads);
 
-// <db>.runs/<job_hash>/ with job.json written (atomically) and any old
-// result.json removed.
+// A job's run folder: <runs_root>/<first two hex digits of its hash>/<hash>
+// (256 shards: 50 000 jobs make about 200 entries per folder, not 50 000
+// in one), or <runs_root>/<hash> when that folder of the flat layout of
+// older versions exists (so a resume finds the checkpoint it left there).
+// A hash that is empty or not a plain file name: <runs_root>/<hash>.
+std::filesystem::path run_dir_for(const std::filesystem::path& runs_root, const std::string& job_hash);
+
+// run_dir_for(runs_root, job_hash) with job.json written (atomically) and
+// any old result.json removed.
 std::filesystem::path prepare_run_dir(const std::filesystem::path& runs_root, const std::string& job_hash,
                                       const std::string& job_json);
 

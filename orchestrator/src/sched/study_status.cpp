@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "exec/executor.h"
 #include "sched/study_eta.h"
 #include "study/study_plan.h"
 
@@ -70,7 +71,7 @@ nlohmann::json study_detail(Store& store, long long study_id, const std::filesys
       } else if (p.job_status == "running") {
         ++running_count;
         e.state = EtaJob::State::kRunning;
-        const auto dir = runs_root / p.job_hash;
+        const auto dir = run_dir_for(runs_root, p.job_hash);
         const auto prog = read_job_progress(progress_file(dir));
         if (prog && (*prog)["elapsed_s"].is_number()) e.elapsed_s = (*prog)["elapsed_s"].get<double>();
         nlohmann::json r = {{"job", p.job_id},

@@ -17,8 +17,8 @@
 namespace gridfree {
 
 // {"series": [...], "running": [...], "eta": {...}} for one study; run
-// folders are <runs_root>/<job_hash>. `workers` = jobs at a time for the ETA
-// (the running count when 0).
+// folders are exec/executor.h's run_dir_for(runs_root, job_hash). `workers`
+// = jobs at a time for the ETA (the running count when 0).
 nlohmann::json study_detail(Store& store, long long study_id, const std::filesystem::path& runs_root,
                             int workers = 0);
 
