@@ -102,7 +102,9 @@ int run_study(const RunOptions& ro) {
                                             "attempt spent): fix the cause and run again");
   // 4. Report and exit code.
   finish_ready_series(store, sub.study_id);
-  const bool report_ok = refresh_report(store, sub.study_id, options) && sum.reports_failed == 0;
+  // After a stop the report is left for the next run (a large study's report
+  // takes minutes; the stop must not wait for it).
+  const bool report_ok = sum.interrupted || (refresh_report(store, sub.study_id, options) && sum.reports_failed == 0);
   const auto st = store.statuses(sub.study_id).front();
   std::cerr << "study " << st.name << ": " << st.status << " — " << st.converged << "/" << st.jobs
             << " jobs converged, " << st.failed << " failed";
@@ -110,7 +112,9 @@ int run_study(const RunOptions& ro) {
   // Only a report that exists is named; a failed write is an error (exit 1).
   const auto html = options.report_dir(st.name) / "report.html";
   std::error_code ec;
-  if (report_ok && std::filesystem::is_regular_file(html, ec)) std::cerr << "\nreport: " << html.string() << '\n';
+  if (sum.interrupted)
+    std::cerr << "\nreport: not rewritten (interrupted; the next run or `gridfree report` writes it)\n";
+  else if (report_ok && std::filesystem::is_regular_file(html, ec)) std::cerr << "\nreport: " << html.string() << '\n';
   else std::cerr << "\nreport: not written (see the error above); the results are in the database\n";
   if (sum.interrupted) return to_int(ExitCode::kInterrupted);
   if (!report_ok) return to_int(ExitCode::kInternalError);

@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "exec/executor.h"
 #include "sched/series_finish.h"
+#include "sched/stop_signal.h"
 #include "sched/study_status.h"
 #include "store/orphans.h"
 
@@ -124,9 +125,15 @@ void add_report_command(CLI::App& app, int& exit_code) {
     const long long id = require_study(*store, *name);
     finish_ready_series(*store, id);
     const std::filesystem::path dir = out->empty() ? std::filesystem::path("reports") / *name : std::filesystem::path(*out);
-    const auto html = write_report(*store, id, dir);
-    std::cout << "report: " << html.string() << '\n';
-    exit_code = to_int(ExitCode::kOk);
+    StopSignals signals;  // SIGINT/SIGTERM stop the write (and a chart converter) at once
+    try {
+      const auto html = write_report(*store, id, dir, [&signals] { return signals.requested(); });
+      std::cout << "report: " << html.string() << '\n';
+      exit_code = to_int(ExitCode::kOk);
+    } catch (const ReportInterrupted&) {
+      std::cerr << "report: interrupted; run `gridfree report` again to write it\n";
+      exit_code = to_int(ExitCode::kInterrupted);
+    }
   });
 }
 

@@ -16,31 +16,30 @@
 
 namespace gridfree {
 
-namespace {
-
-// Removes ".<name>.tmp-<pid>-*" files next to `target` whose writer process
-// no longer exists (killed between writing and renaming).
-void remove_stale_temps(const std::filesystem::path& target) {
+void remove_stale_temporaries(const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
-  const std::string prefix = "." + target.filename().string() + ".tmp-";
   std::error_code ec;
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (name.rfind(prefix, 0) != 0) continue;
-    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
-    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+    bool stale = false;
+    if (const auto at = name.rfind(".tmp-"); name.size() > 1 && name[0] == '.' && at != std::string::npos) {
+      const long pid = std::strtol(name.c_str() + at + 5, nullptr, 10);
+      stale = pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+    } else {
+      const auto ends_with = [&](const std::string& tail) {
+        return name.size() > tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+      };
+      stale = ends_with(".pdf.tmp") || ends_with(".png.tmp");
+    }
+    if (stale) {
       std::error_code ignored;
       fs::remove(it->path(), ignored);
     }
   }
 }
 
-}  // namespace
-
 void write_file_atomically(const std::filesystem::path& target, std::string_view content) {
   namespace fs = std::filesystem;
-  remove_stale_temps(target);
   // Unique per process and thread, so concurrent writers never share a temp file.
   const auto tid = std::hash<std::thread::id>{}(std::this_thread::get_id());
   std::string name = ".";

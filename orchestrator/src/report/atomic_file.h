@@ -9,8 +9,14 @@
 namespace gridfree {
 
 // Throws std::runtime_error (with the path and the reason) on failure; the
-// temporary file is removed then. Temporary files of the same target left by
-// a writer that was killed (its pid no longer exists) are removed first.
+// temporary file (".<name>.tmp-<pid>-<n>") is removed then.
 void write_file_atomically(const std::filesystem::path& target, std::string_view content);
+
+// Removes the temporary files in `dir` left by writers that were killed
+// (kill -9) between writing and renaming: ".<name>.tmp-<pid>-<n>" whose
+// process no longer exists, and "<name>.pdf.tmp"/"<name>.png.tmp" of chart
+// exports by older versions. One listing of the folder: called once per
+// report write, not per file (which made a report write O(files²)).
+void remove_stale_temporaries(const std::filesystem::path& dir);
 
 }  // namespace gridfree

@@ -48,14 +48,19 @@ std::string read_file(const std::filesystem::path& file) {
 
 }  // namespace
 
-ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir) {
+ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,
+                               const StopRequested& stop) {
   return write_study_report(data, out_dir,
-                            library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}));
+                            library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}), stop);
 }
 
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,
-                               const Extrapolator& extrapolate) {
+                               const Extrapolator& extrapolate, const StopRequested& stop) {
+  const auto check_stop = [&stop] {
+    if (stop && stop()) throw ReportInterrupted();
+  };
   std::filesystem::create_directories(out_dir);
+  remove_stale_temporaries(out_dir);  // once per write: one listing of the folder
   ReportContent content = build_report_content(data, extrapolate);
   ReportFiles files;
   for (const NamedTable* t : {&content.grids_table, &content.series_table, &content.differences_table,
@@ -76,6 +81,7 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
     spdlog::warn("report: {}", content.export_note);
   }
   for (NamedChart& c : content.charts) {
+    check_stop();
     files.svg.push_back(out_dir / c.file);
     const std::string svg = render_svg_file(c.chart);
     // An unchanged chart keeps its PDF/PNG: the report is rewritten after
@@ -89,8 +95,9 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
     if (unchanged && std::filesystem::exists(pdf) && std::filesystem::exists(png))
       c.converted = {pdf.filename().string(), png.filename().string()};
     else
-      c.converted = export_chart(converter, files.svg.back());
+      c.converted = export_chart(converter, files.svg.back(), stop);
   }
+  check_stop();
   remove_stale_charts(out_dir, files.svg);
   files.markdown = out_dir / "report.md";
   write_file_atomically(files.markdown, render_markdown(content));

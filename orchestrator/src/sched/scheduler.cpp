@@ -161,13 +161,17 @@ int recover_stale_jobs(Store& store) {
 }
 
 bool refresh_report(Store& store, long long study_id, const SchedulerOptions& o) {
-  if (!o.report_dir) return true;
+  if (!o.report_dir || o.stop_requested()) return true;  // stopping: the next run writes it
   const auto st = store.statuses(study_id);
   if (st.empty()) return true;
   const auto dir = o.report_dir(st.front().name);
   if (dir.empty()) return true;
   try {
-    write_report(store, study_id, dir);
+    write_report(store, study_id, dir, o.stop_requested);
+    return true;
+  } catch (const ReportInterrupted&) {
+    spdlog::info("report for study '{}' interrupted by the stop; the next run or `gridfree report` writes it",
+                 st.front().name);
     return true;
   } catch (const std::exception& e) {
     spdlog::error("report for study '{}' not written: {}", st.front().name, e.what());

@@ -67,7 +67,9 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
 
 // Rewrites the report of a study. A failure is logged and returned as false
 // (the results are safe in the store either way; `run` and `daemon` then
-// exit non-zero).
+// exit non-zero). Once a stop is requested (options.stop_requested, also
+// polled while the report is written: report/report_stop.h) the report is
+// left for the next run and true returned.
 bool refresh_report(Store& store, long long study_id, const SchedulerOptions& options);
 
 }  // namespace gridfree

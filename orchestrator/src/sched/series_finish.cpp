@@ -270,14 +270,15 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   return d;
 }
 
-std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir) {
+std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir,
+                                   const StopRequested& stop) {
   const StudyReportData data = build_report_data(store, study_id);
-  if (!adaptive_grids_of(store.study_definition(study_id))) return write_study_report(data, out_dir).html;
+  if (!adaptive_grids_of(store.study_definition(study_id))) return write_study_report(data, out_dir, stop).html;
   // Adaptive series: the report fits what the decisions and the store used,
   // the window of the finest grids (sched/adaptive_window.h).
   const Extrapolator windowed =
       windowed_extrapolator(library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}));
-  return write_study_report(data, out_dir, windowed).html;
+  return write_study_report(data, out_dir, windowed, stop).html;
 }
 
 }  // namespace gridfree

@@ -12,6 +12,7 @@
 
 #include "report/extrapolator.h"
 #include "report/report_data.h"
+#include "report/report_stop.h"
 #include "store/store.h"
 
 namespace gridfree {
@@ -47,6 +48,8 @@ int finish_series_of_job(Store& store, long long study_id, long long job_id, boo
 StudyReportData build_report_data(Store& store, long long study_id);
 
 // build_report_data + write_study_report into out_dir; returns the HTML path.
-std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir);
+// `stop`: see report/report_stop.h (throws ReportInterrupted).
+std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir,
+                                   const StopRequested& stop = {});
 
 }  // namespace gridfree
