@@ -12,7 +12,10 @@
 // last line of a run). A count or price that takes long (both read the
 // whole study) waits kCostFactor times its own duration before the next,
 // so each takes at most about 1/kCostFactor of the loop's time however
-// large the study.
+// large the study. The ETA returned includes this run's own pace
+// (sched/study_eta.h with_run_overhead: the wall time per job the workers'
+// times do not explain × the jobs left); without a priced ETA the base is
+// the mean wall time × jobs left / workers.
 #pragma once
 
 #include <functional>
@@ -36,18 +39,23 @@ class ProgressTally {
   ProgressCounts exact();    // recounted and re-priced now
 
   void job_started();
-  void job_finished(bool converged);  // a final outcome was recorded
+  // A final outcome was recorded; `wall_s`: the worker's wall time.
+  void job_finished(bool converged, double wall_s = 0);
   void job_requeued();                    // queued again (retry, release)
 
  private:
   void recount(double now);
   void reprice(double now);
+  ProgressCounts with_pace(double now) const;
 
   Sources sources_;
   double recount_s_, eta_s_;
   ProgressCounts counts_;
   std::optional<double> counted_at_, priced_at_;
   double count_cost_s_ = 0, eta_cost_s_ = 0;  // duration of the last count and price
+  std::optional<double> first_start_;          // this run's first job start
+  int finished_here_ = 0;                      // final outcomes recorded by this run
+  double worker_s_here_ = 0;                   // their workers' wall time
 };
 
 }  // namespace gridfree

@@ -289,7 +289,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     if (out.kind == OutcomeKind::kFinal) {
       if (store.record_result(f.job.job_id, o.owner, out.row)) remove_checkpoint(exit->run_dir);
       ++sum.finished;
-      tally.job_finished(out.row.status == "converged");
+      tally.job_finished(out.row.status == "converged", out.row.wall_s);
       if (out.row.status == "converged") {
         ++sum.converged;
         char buf[64];
@@ -307,7 +307,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
         what += "will retry: " + out.row.reason;
       } else {
         remove_checkpoint(exit->run_dir);
-        tally.job_finished(false);
+        tally.job_finished(false, out.row.wall_s);
         ++sum.finished;
         ++sum.failed;
         what += "failed: " + out.row.reason;

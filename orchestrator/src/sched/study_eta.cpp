@@ -24,6 +24,12 @@ Eta estimate_eta(const std::vector<EtaJob>& jobs, int workers) {
   return e;
 }
 
+double with_run_overhead(double eta_s, const RunPace& pace, int jobs_left, int workers) {
+  if (pace.finished < kMinRunJobsForOverhead || jobs_left <= 0) return eta_s;
+  const double unexplained = std::max(0.0, pace.elapsed_s - pace.worker_s / std::max(1, workers));
+  return eta_s + unexplained / pace.finished * jobs_left;
+}
+
 std::string hours_minutes(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "?";
   if (seconds < 60) return "< 1 min";

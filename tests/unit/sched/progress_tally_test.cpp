@@ -121,5 +121,23 @@ TEST(ProgressTally, ACostlyCountWaitsTwentyTimesItsDuration) {
   EXPECT_EQ(probe.counted, 4);
 }
 
+TEST(ProgressTally, TheEtaIncludesThisRunsOwnPace) {
+  TallyProbe probe;  // the priced ETA: 60 s (the cost model's, workers only)
+  probe.stored.total = 1000;
+  probe.stored.workers = 2;
+  auto tally = probe.tally();
+  tally.job_started();  // at t = 0
+  for (int i = 0; i < 10; ++i) {
+    probe.clock += 1.0;  // one job per second, each 0.1 s in its worker
+    tally.job_finished(true, 0.1);
+    if (i < 9) tally.job_started();
+  }
+  probe.stored.done = 10;
+  const auto c = tally.exact();  // priced: 60 s
+  ASSERT_TRUE(c.eta_s);
+  // g = (10 s − 10 × 0.1 s / 2) / 10 = 0.95 s per job, 990 jobs left.
+  EXPECT_NEAR(*c.eta_s, 60.0 + 0.95 * 990, 1e-9);
+}
+
 }  // namespace
 }  // namespace gridfree

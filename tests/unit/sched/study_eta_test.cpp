@@ -38,5 +38,28 @@ TEST(StudyEta, HoursAndMinutes) {
   EXPECT_EQ(hours_minutes(-1), "?");
 }
 
+// The case of the issue: instant workers, 368 jobs in 306 s at -j 2 (1.2
+// jobs/s, the orchestrator's own cost), 9 350 left. The cost model prices
+// the workers at nearly nothing ("< 1 min"); with the run's pace the ETA is
+// about 9 350 × 0.83 s ≈ 2 h 09 min.
+TEST(RunOverhead, PricesTheTimeTheWorkersDoNotExplain) {
+  const RunPace pace{306.0, 368, 368 * 0.01};
+  const double eta = with_run_overhead(5.0, pace, 9350, 2);
+  const double g = (306.0 - 368 * 0.01 / 2) / 368;  // s per job beyond the workers
+  EXPECT_NEAR(eta, 5.0 + g * 9350, 1e-9);
+  EXPECT_GT(eta, 2 * 3600.0);
+  EXPECT_EQ(hours_minutes(eta), "2 h 09 min");
+}
+
+TEST(RunOverhead, AddsNothingWhenTheWorkersFillTheTime) {
+  // 10 jobs of 60 s on 2 workers in 300 s: the workers explain it all.
+  EXPECT_DOUBLE_EQ(with_run_overhead(1200.0, {300.0, 10, 600.0}, 40, 2), 1200.0);
+}
+
+TEST(RunOverhead, WaitsForEnoughFinishedJobs) {
+  EXPECT_DOUBLE_EQ(with_run_overhead(60.0, {100.0, kMinRunJobsForOverhead - 1, 0.0}, 1000, 2), 60.0);
+  EXPECT_DOUBLE_EQ(with_run_overhead(60.0, {100.0, 50, 0.0}, 0, 2), 60.0);  // nothing left
+}
+
 }  // namespace
 }  // namespace gridfree
