@@ -11,6 +11,9 @@
 # cc, one small process per job; BENCH_WORKER=shell: tests/fixtures/
 # fake_worker.sh (a few processes per job, about 0.2 s of a slot each, so
 # near 10 jobs/s at -j 2 at most). BENCH_J: jobs at once (default 2).
+# BENCH_EXPORT=0: gridfree runs with a PATH without rsvg-convert, so the
+# reports are written without their PDF/PNG copies (at 600 series those take
+# rsvg-convert minutes per report write, in child processes not counted).
 #
 # Prints per size: jobs, wall s, jobs/s, the orchestrator's own CPU (user +
 # system of the `gridfree` process alone, read from /proc every 0.1 s, so
@@ -29,6 +32,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 tick=$(getconf CLK_TCK)
 jobs_at_once=${BENCH_J:-2}
+path_for_run=$PATH
+if [[ ${BENCH_EXPORT:-1} == 0 ]]; then mkdir -p "$work/no_converter"; path_for_run="$work/no_converter"; fi
 case ${BENCH_WORKER:-instant} in
   instant) worker="$work/instant_worker"
            cc -O2 -o "$worker" "$here/bench/instant_worker.c" -lm ;;
@@ -63,7 +68,7 @@ for k in "${sizes[@]}"; do
   study_of "$k" > "$dir/study.json"
   jobs=$((108 * k))
   start=$(date +%s.%N)
-  (cd "$dir" && GRIDFREE_WORKER="$worker" \
+  (cd "$dir" && PATH="$path_for_run" GRIDFREE_WORKER="$worker" \
      "$bin/gridfree" run study.json --db "$dir/db.sqlite" -j "$jobs_at_once" > "$dir/run.log" 2>&1) &
   runner=$!
   pid=""
