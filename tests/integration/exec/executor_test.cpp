@@ -137,11 +137,12 @@ std::pair<bool, bool> shutdown_checkpoints(const std::string& test, double grace
   LocalExecutor ex(kFakeWorker, grace_s);
   ex.start(launch(root, 1, first));
   ex.start(launch(root, 2, second));
-  wait_for_trap(root / "hash1");
-  wait_for_trap(root / "hash2");
+  wait_for_trap(run_dir_for(root, "hash1"));
+  wait_for_trap(run_dir_for(root, "hash2"));
   EXPECT_EQ(ex.kill_all().size(), 2u);
   EXPECT_EQ(ex.in_flight(), 0u);
-  return {fs::exists(checkpoint_file(root / "hash1")), fs::exists(checkpoint_file(root / "hash2"))};
+  return {fs::exists(checkpoint_file(run_dir_for(root, "hash1"))),
+          fs::exists(checkpoint_file(run_dir_for(root, "hash2")))};
 }
 
 TEST(LocalExecutor, ShutdownLetsWorkersCheckpoint) {
