@@ -124,6 +124,45 @@ nlohmann::ordered_json to_ordered_json(const CoverageCheck& c) {
                {"windows", windows}};
 }
 
+namespace {
+
+std::optional<double> number_at(const nlohmann::json& j, const char* key) {
+  if (!j.contains(key) || !j[key].is_number()) return std::nullopt;
+  return j[key].get<double>();
+}
+
+std::optional<bool> flag_at(const nlohmann::json& j, const char* key) {
+  if (!j.contains(key) || !j[key].is_boolean()) return std::nullopt;
+  return j[key].get<bool>();
+}
+
+}  // namespace
+
+CoverageCheck coverage_from_json(const nlohmann::json& j) {
+  CoverageCheck c;
+  c.status = j.value("status", std::string());
+  c.reference = number_at(j, "reference");
+  c.reference_verdict = j.value("reference_verdict", std::string());
+  c.judged = j.value("judged", 0);
+  c.covered = j.value("covered", 0);
+  c.f0_covered = j.value("f0_covered", 0);
+  c.promised = j.value("promised", 0.95);
+  if (!j.contains("windows") || !j["windows"].is_array()) return c;
+  for (const auto& w : j["windows"]) {
+    CoverageWindow win;
+    win.h_fine = number_at(w, "h_fine").value_or(0.0);
+    win.h_coarse = number_at(w, "h_coarse").value_or(0.0);
+    win.count = w.value("n_grids", std::size_t{0});
+    win.fit = {w.value("verdict", std::string()), number_at(w, "f0"), number_at(w, "u0"), number_at(w, "f1"),
+               number_at(w, "u1")};
+    win.distance = number_at(w, "distance");
+    win.covered = flag_at(w, "covered");
+    win.f0_covered = flag_at(w, "f0_covered");
+    c.windows.push_back(std::move(win));
+  }
+  return c;
+}
+
 std::string CoverageCheck::summary() const {
   if (status == "too_few_grids") return "coverage not checked: it needs at least 6 converged grids";
   if (status == "no_reference") return "coverage not checked: the whole series has no extrapolated value";

@@ -81,4 +81,8 @@ WindowFit window_fit(const ExtrapolationResult& r);
 // distance, covered, f0_covered}] (null where not computed).
 nlohmann::ordered_json to_ordered_json(const CoverageCheck& check);
 
+// The inverse, for a check stored as that JSON (the database's
+// series.coverage_json); a missing or mistyped member is left at its default.
+CoverageCheck coverage_from_json(const nlohmann::json& j);
+
 }  // namespace gridfree

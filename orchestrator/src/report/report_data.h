@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "extrap/self_check.h"
 #include "report/alignment_data.h"
 
 namespace gridfree {
@@ -30,6 +31,7 @@ struct SeriesData {
   double fwhm_dp = 0;
   std::string status;                // queued | running | done | failed
   std::vector<GridPoint> grids;      // every grid of the series, any order
+  std::optional<CoverageCheck> stored_coverage;  // made when the series finished (series.coverage_json)
   std::string label() const;         // "PC1 superbee fwhm6 bvk"
 };
 

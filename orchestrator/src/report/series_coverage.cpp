@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
@@ -23,14 +24,37 @@ WindowFit window_fit(const ExtrapolationView& view) {
   return fit;
 }
 
+namespace {
+
+// The check on sorted grids, the whole fit given.
+CoverageCheck check_sorted(const std::vector<double>& h, const std::vector<double>& f, const WindowFit& whole,
+                           const Extrapolator& extrapolate) {
+  return coverage_self_check(h, f, [&](const std::vector<double>& wh, const std::vector<double>& wf) {
+    return wh.size() == h.size() ? whole : window_fit(from_json(extrapolate(wh, wf)));
+  });
+}
+
+}  // namespace
+
+std::optional<CoverageCheck> coverage_of(const std::vector<double>& h, const std::vector<double>& f,
+                                         const nlohmann::json& whole, const Extrapolator& extrapolate) {
+  if (h.size() < CoverageRules{}.min_series || h.size() != f.size() || !extrapolate) return std::nullopt;
+  std::vector<std::pair<double, double>> grids;
+  for (std::size_t i = 0; i < h.size(); ++i) grids.emplace_back(h[i], f[i]);
+  std::sort(grids.begin(), grids.end());
+  std::vector<double> hs, fs;
+  for (const auto& [hi, fi] : grids) hs.push_back(hi), fs.push_back(fi);
+  const WindowFit fit = window_fit(from_json(whole));
+  if (!fit.f0) return std::nullopt;
+  return check_sorted(hs, fs, fit, extrapolate);
+}
+
 std::optional<CoverageCheck> series_coverage(const SeriesSummary& s, const Extrapolator& extrapolate) {
-  const CoverageRules rules;
-  if (s.incomplete || !s.extrapolation || !extrapolate || s.h.size() < rules.min_series) return std::nullopt;
-  const WindowFit whole = window_fit(*s.extrapolation);
+  if (s.incomplete || !s.extrapolation || s.h.size() < CoverageRules{}.min_series) return std::nullopt;
+  if (s.series.stored_coverage) return s.series.stored_coverage;
+  if (!extrapolate) return std::nullopt;
   try {
-    return coverage_self_check(s.h, s.f, [&](const std::vector<double>& h, const std::vector<double>& f) {
-      return h.size() == s.h.size() ? whole : window_fit(from_json(extrapolate(h, f)));
-    }, rules);
+    return check_sorted(s.h, s.f, window_fit(*s.extrapolation), extrapolate);
   } catch (const std::exception& e) {
     spdlog::warn("report: coverage self-check of series {} failed: {}", s.label, e.what());
     return std::nullopt;

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "extrap/self_check.h"
 #include "report/extrap_view.h"
 #include "report/extrapolator.h"
@@ -20,9 +22,14 @@ struct SeriesSummary;
 // The numbers the check needs from the report's view of an extrapolation.
 WindowFit window_fit(const ExtrapolationView& view);
 
-// The check of one series, or nothing when it has pending grids, fewer than
-// 6 converged grids or no extrapolation. The whole series' extrapolation is
-// taken from the summary, not recomputed.
+// The check of converged grids (h, f in any order) whose whole extrapolation
+// (the contract JSON) is `whole`; nothing with fewer than 6 grids or no f0.
+std::optional<CoverageCheck> coverage_of(const std::vector<double>& h, const std::vector<double>& f,
+                                         const nlohmann::json& whole, const Extrapolator& extrapolate);
+
+// The check of one series in a report: the one stored when the series
+// finished (SeriesData::stored_coverage), else made now; nothing when it has
+// pending grids, fewer than 6 converged grids or no extrapolation.
 std::optional<CoverageCheck> series_coverage(const SeriesSummary& s, const Extrapolator& extrapolate);
 
 // "Δ* 3.3–1.93 (1.7 U₁)" for every window that missed, coarsest first.

@@ -10,6 +10,7 @@
 #include "core/version.h"
 #include "extrap/verdict.h"
 #include "report/report.h"
+#include "report/series_coverage.h"
 #include "sched/adaptive_series.h"
 #include "sched/adaptive_window.h"
 #include "store/store_alignment.h"
@@ -179,6 +180,13 @@ nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extra
   extrapolation_rows(ex, points, fits, unc);
   const VerdictRow verdict = verdict_row(ex, static_cast<int>(h.size()));
   store.store_extrapolation(series.id, fits, unc, verdict);
+  // The coverage self-check, once per finished series: reports read it.
+  try {
+    if (const auto check = coverage_of(h, f, ex, extrapolate))
+      store.store_coverage(series.id, to_ordered_json(*check).dump());
+  } catch (const std::exception& e) {
+    spdlog::warn("series {}: coverage self-check failed: {}", series.key.label(), e.what());
+  }
   spdlog::info("series {} complete: {} converged of {}; {}", series.key.label(), h.size(), points.size(),
                verdict_log_text(ex, verdict));
   return ex;
@@ -247,6 +255,10 @@ StudyReportData build_report_data(Store& store, long long study_id) {
     sd.deposition = s.key.deposition;
     sd.fwhm_dp = s.key.fwhm_dp;
     sd.status = s.status;
+    if (!s.coverage_json.empty()) {
+      const auto stored = nlohmann::json::parse(s.coverage_json, nullptr, false);
+      if (stored.is_object()) sd.stored_coverage = coverage_from_json(stored);
+    }
     for (const auto& p : store.series_points(s.id)) {
       GridPoint g;
       g.job_hash = p.job_hash;

@@ -1,7 +1,7 @@
-// Schema version 9 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
+// Schema version 10 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
 // state; 4: series verdicts; 5: series transfer columns; 6: alignment check;
 // 7: adaptive series; 8: ensembles; 9: indexes for
-// the scheduler at ensemble scale). Status words (docs/INTERFACE.md §5):
+// the scheduler at ensemble scale; 10: the series' coverage self-check). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -289,6 +289,12 @@ CREATE INDEX series_study_status ON series(study_id, status);
 CREATE INDEX jobs_queue ON jobs(status, nx, ny, nz, id);
 )sql";
 
+// Step 10 — the coverage self-check of a finished series
+// (extrap/self_check.h), made once when the series finishes, read by reports.
+constexpr const char* kV10Coverage = R"sql(
+ALTER TABLE series ADD COLUMN coverage_json TEXT;
+)sql";
+
 // Foreign keys off for the migration's transaction, on again afterwards
 // (also when a step throws).
 struct ForeignKeysOff {
@@ -335,6 +341,7 @@ void migrate(Database& db, int target) {
   if (v < 7 && target >= 7) db.exec(kV7AdaptiveSeries);
   if (v < 8 && target >= 8) db.exec(kV8Ensembles);  // ensembles (store/schema_ensembles.h)
   if (v < 9 && target >= 9) db.exec(kV9ScaleIndexes);
+  if (v < 10 && target >= 10) db.exec(kV10Coverage);
   if (v < 5 && target >= 5) {
     auto fk = db.prepare("PRAGMA foreign_key_check");
     if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);

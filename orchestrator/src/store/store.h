@@ -63,6 +63,7 @@ struct SeriesInfo {
   std::string status;
   std::string verdict;           // converged | pre-asymptotic | unreliable | insufficient_grids | "" (none yet)
   std::string verdict_reasons;   // JSON array of sentences, or ""
+  std::string coverage_json;     // the coverage self-check (extrap/self_check.h) as JSON, or ""
 };
 
 struct VerdictRow {              // docs/EXTRAPOLATION.md "Verdicts"
@@ -194,6 +195,8 @@ class Store {
   void store_extrapolation(long long series_id, const std::vector<ExtrapolationRow>& fits,
                            const std::vector<UncertaintyRow>& uncertainties,
                            const std::optional<VerdictRow>& verdict = std::nullopt);
+  // The series' coverage self-check as JSON (extrap/self_check.h to_ordered_json).
+  void store_coverage(long long series_id, const std::string& json);
   std::vector<ExtrapolationRow> extrapolations(long long series_id);
   std::vector<UncertaintyRow> uncertainties(long long series_id);
 

@@ -16,14 +16,19 @@ SeriesInfo read_series(const Statement& st) {
   s.status = st.as_text(7);
   s.verdict = st.as_text(8);
   s.verdict_reasons = st.as_text(9);
+  s.coverage_json = st.as_text(10);
   return s;
 }
 
 constexpr const char* kSeriesColumns =
     "SELECT id, study_id, case_name, convection, fwhm_dp, drag, deposition, status, COALESCE(verdict, ''), "
-    "COALESCE(verdict_reasons, '') FROM series ";
+    "COALESCE(verdict_reasons, ''), COALESCE(coverage_json, '') FROM series ";
 
 }  // namespace
+
+void Store::store_coverage(long long series_id, const std::string& json) {
+  db_.prepare("UPDATE series SET coverage_json = ? WHERE id = ?").bind_all(json, series_id).run();
+}
 
 std::vector<SeriesInfo> Store::series_of_study(long long study_id) {
   std::vector<SeriesInfo> out;

@@ -43,7 +43,7 @@ StudyReportData first_order_study() {
   const double f0[2] = {1158.8, 850.0}, c[2] = {0.6, 1.5};
   const char* drag[2] = {"bvk", "hkl"};
   for (int s = 0; s < 2; ++s) {
-    SeriesData series{s + 1, "PC1", "superbee", drag[s], "diffusion", 6, "done", {}};
+    SeriesData series{s + 1, "PC1", "superbee", drag[s], "diffusion", 6, "done", {}, {}};
     for (double h : {3.0, 2.5, 2.0, 1.5, 1.0, 0.75}) {
       GridPoint g;
       g.delta_star = h;
@@ -239,7 +239,7 @@ TEST(ReportRenderEnsembles, ChromiumRendersTheBudgetChart) {
   long long id = 0;
   for (const char* drag : {"bvk", "hkl"}) {
     for (int k : {0, 2, 7}) {
-      SeriesData series{++id, "t" + std::to_string(k), "superbee", drag, "diffusion", 6, "done", {}};
+      SeriesData series{++id, "t" + std::to_string(k), "superbee", drag, "diffusion", 6, "done", {}, {}};
       for (double h : {3.0, 2.5, 2.0, 1.5, 1.0, 0.75}) {
         GridPoint g;
         g.delta_star = h;

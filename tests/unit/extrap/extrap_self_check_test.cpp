@@ -113,6 +113,9 @@ TEST(SelfCheck, TheLibraryCoversAnExactPowerLaw) {
   EXPECT_EQ(j["windows"].size(), c.windows.size());
   EXPECT_EQ(j["status"], "checked");
   EXPECT_EQ(j["below_promise"], false);
+  // Stored as JSON and read back (the database's series.coverage_json): the same check.
+  const CoverageCheck back = coverage_from_json(nlohmann::json::parse(j.dump()));
+  EXPECT_EQ(to_ordered_json(back).dump(), j.dump());
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ namespace {
 StudyReportData cubic_study(bool with_pending) {
   StudyReportData d;
   d.study_name = "coverage";
-  SeriesData s{1, "PC1", "superbee", "bvk", "diffusion", 6, with_pending ? "running" : "done", {}};
+  SeriesData s{1, "PC1", "superbee", "bvk", "diffusion", 6, with_pending ? "running" : "done", {}, {}};
   for (int i = 0; i < 8; ++i) {
     const double h = 0.5 * std::pow(3.3 / 0.5, i / 7.0);
     GridPoint g;
@@ -61,6 +61,20 @@ TEST(ReportCoverage, ThePapersMethodIsWarnedTheDefaultIsNot) {
   EXPECT_FALSE(any_contains(series_warnings(capped), "coarser windows"));
   EXPECT_NE(coverage_summary(capped.series).find("of 10 coarser windows of 1 series"), std::string::npos)
       << coverage_summary(capped.series);
+}
+
+TEST(ReportCoverage, AStoredCheckIsUsedNotRecomputed) {
+  StudyReportData d = cubic_study(false);
+  CoverageCheck stored;
+  stored.status = "checked";
+  stored.reference = 123.0;
+  stored.judged = 7;
+  stored.covered = 3;
+  d.series[0].stored_coverage = stored;
+  const ReportContent c = build_report_content(d, library_extrapolator({}));
+  ASSERT_TRUE(c.series[0].coverage.has_value());
+  EXPECT_EQ(c.series[0].coverage->judged, 7);
+  EXPECT_TRUE(c.series[0].coverage->windows.empty());
 }
 
 TEST(ReportCoverage, NotMadeWhileGridsArePending) {

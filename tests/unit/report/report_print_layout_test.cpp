@@ -48,7 +48,7 @@ StudyReportData close_grids_study() {
   d.status = "done";
   for (const char* scheme : {"superbee", "fou"}) {
     const double cost = scheme[0] == 's' ? 1.0 : 0.6;
-    SeriesData s{scheme[0] == 's' ? 1 : 2, "PC1", scheme, "bvk", "diffusion", 6, "done", {}};
+    SeriesData s{scheme[0] == 's' ? 1 : 2, "PC1", scheme, "bvk", "diffusion", 6, "done", {}, {}};
     for (double h : {2.0, 1.5, 1.0, 0.786, 0.667}) {
       GridPoint g;
       g.delta_star = h;

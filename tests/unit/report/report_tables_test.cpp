@@ -19,7 +19,7 @@ namespace gridfree {
 namespace {
 
 TEST(ReportSeries, LabelNamesTheFactors) {
-  SeriesData s{0, "PC1", "superbee", "bvk", "diffusion", 6, "done", {}};
+  SeriesData s{0, "PC1", "superbee", "bvk", "diffusion", 6, "done", {}, {}};
   EXPECT_EQ(s.label(), "PC1 superbee fwhm6 bvk");
   s.fwhm_dp = 4.5;
   EXPECT_EQ(s.label(), "PC1 superbee fwhm4.5 bvk");
@@ -81,9 +81,9 @@ TEST(ReportDifferences, OnlyPairsDifferingInExactlyOneFactor) {
 
 TEST(ReportDifferences, FilterWidthAndDepositionAreFactors) {
   std::vector<SeriesSummary> s(3);
-  s[0].series = {0, "PC1", "superbee", "bvk", "diffusion", 4, "done", {}};
-  s[1].series = {0, "PC1", "superbee", "bvk", "diffusion", 8, "done", {}};
-  s[2].series = {0, "PC1", "superbee", "bvk", "centroid", 4, "done", {}};
+  s[0].series = {0, "PC1", "superbee", "bvk", "diffusion", 4, "done", {}, {}};
+  s[1].series = {0, "PC1", "superbee", "bvk", "diffusion", 8, "done", {}, {}};
+  s[2].series = {0, "PC1", "superbee", "bvk", "centroid", 4, "done", {}, {}};
   const auto d = one_factor_differences(s);
   ASSERT_EQ(d.size(), 2u);
   EXPECT_EQ(d[0].factor, "fwhm_dp");

@@ -61,14 +61,14 @@ inline StudyReportData synthetic_study() {
   d.version = "gridfree 0.1.0 (test)";
   d.baseline_description = "one_at_a_time: PC1 superbee fwhm6 bvk";
 
-  SeriesData a{1, "PC1", "superbee", "bvk", "diffusion", 6, "done", {}};
+  SeriesData a{1, "PC1", "superbee", "bvk", "diffusion", 6, "done", {}, {}};
   for (double h : {2.0, 1.0, 0.5, 1.5}) a.grids.push_back(grid(h, kA));  // unsorted on purpose
-  SeriesData b{2, "PC1", "superbee", "hkl", "diffusion", 6, "done", {}};
+  SeriesData b{2, "PC1", "superbee", "hkl", "diffusion", 6, "done", {}, {}};
   for (double h : {0.5, 1.0, 1.5, 2.0}) b.grids.push_back(grid(h, kB));
   GridPoint bad = grid(0.25, kB, "diverged");
   bad.reason = "residual grew by 1e6, diverged at iteration 12";
   b.grids.push_back(bad);
-  SeriesData c{3, "PC2", "superbee", "bvk", "diffusion", 6, "running", {}};
+  SeriesData c{3, "PC2", "superbee", "bvk", "diffusion", 6, "running", {}, {}};
   for (double h : {1.0, 1.5, 2.0}) c.grids.push_back(grid(h, kC));
   c.grids.push_back(grid(0.5, kC, "queued"));
   d.series = {a, b, c};

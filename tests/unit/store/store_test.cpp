@@ -89,6 +89,19 @@ TEST(Store, ReopeningMigratesNothingAndKeepsData) {
   EXPECT_EQ(scalar(again, "SELECT COUNT(*) FROM jobs"), 2);
 }
 
+TEST(Store, ACoverageCheckIsStoredWithItsSeries) {
+  Store store(test_support::fresh_db_path("store_test", "coverage"));
+  auto [s, ex] = make_study("a", 2, 3, "t");
+  const long long study = store.submit(s, ex).study_id;
+  const auto series = store.series_of_study(study);
+  ASSERT_EQ(series.size(), 2u);
+  EXPECT_EQ(series[0].coverage_json, "");  // none until the series finishes
+  store.store_coverage(series[1].id, R"({"status":"checked","judged":3})");
+  const auto again = store.series_of_study(study);
+  EXPECT_EQ(again[0].coverage_json, "");
+  EXPECT_EQ(again[1].coverage_json, R"({"status":"checked","judged":3})");
+}
+
 TEST(Store, SubmitInsertsEverythingAndResubmitIsANoOp) {
   Store store(test_support::fresh_db_path("store_test", "submit"));
   auto [s, ex] = make_study("a", 2, 3, "t");
