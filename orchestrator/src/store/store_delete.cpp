@@ -34,6 +34,9 @@ std::vector<std::string> Store::remove_orphan_jobs() {
   while (list.step()) hashes.push_back(list.as_text(0));
   db_.prepare(std::string("DELETE FROM uncertainties WHERE job_id IN (") + orphans + ")").run();
   db_.prepare(std::string("DELETE FROM results WHERE job_id IN (") + orphans + ")").run();
+  // their events too ('result' and the like carry only the job id, no study id),
+  // or they would dangle and attach to a later job given the same id
+  db_.prepare(std::string("DELETE FROM events WHERE job_id IN (") + orphans + ")").run();
   db_.prepare(std::string("DELETE FROM jobs WHERE id IN (") + orphans + ")").run();
   return hashes;
 }

@@ -1,5 +1,5 @@
 // Removing a study (gridfree delete) and replacing a changed one (run
-// --replace): shared jobs stay, orphans go with their results, finished
+// --replace): shared jobs stay, orphans go with their results and events, finished
 // identical jobs are reused; the nominal Δ* and the per-series view v_series.
 #include <gtest/gtest.h>
 
@@ -62,6 +62,9 @@ TEST(StoreDelete, RemovesTheStudyAndOrphansButKeepsSharedJobs) {
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE job_hash IN ('shared', 'only-b')"), 2);
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE job_hash = 'only-a'"), 0);
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM results"), 1);  // the shared job's result stays
+  // the removed job's events go with it; the shared job's stay
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM events WHERE job_id IS NOT NULL AND job_id NOT IN (SELECT id FROM jobs)"), 0);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM events WHERE kind = 'result'"), 1);
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM pragma_foreign_key_check"), 0);
   EXPECT_FALSE(store.delete_study("a").has_value());
 }
