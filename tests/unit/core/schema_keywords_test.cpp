@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/schema_keywords.h"
+#include "core/schema_messages.h"
 
 namespace gridfree {
 namespace {
@@ -97,6 +98,19 @@ TEST(SchemaKeywords, ObjectsNameEveryUnknownAndMissingKey) {
   EXPECT_EQ(problems[2].where, "/z");
   EXPECT_EQ(only({{"minProperties", 1}}, json::object()), ": needs at least 1 entry, has 0");
   EXPECT_EQ(only({{"additionalProperties", {{"type", "string"}}}}, {{"k", 1}}), "/k: expected a string, got an integer (1)");
+}
+
+// A hostile 30,000-character key is quoted by its first 40 characters, at
+// its object (a pointer would echo it whole).
+TEST(SchemaKeywords, AnUnknownLongKeyIsQuotedShort) {
+  const json s = {{"type", "object"}, {"properties", {{"a", true}}}, {"additionalProperties", false}};
+  const std::string key(30000, 'k');
+  const auto problems = check(s, {{"a", 1}, {key, 1}});
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].where, "");
+  EXPECT_EQ(problems[0].reason, "unknown key '" + std::string(kQuotedPrefix, 'k') + "...' (30000 bytes) (allowed: a)");
+  EXPECT_LT(format_problems(problems).size(), 200u);
+  EXPECT_EQ(check(s, {{std::string(kQuotedPrefix, 'k'), 1}})[0].where, "/" + std::string(kQuotedPrefix, 'k'));
 }
 
 TEST(SchemaKeywords, CombinatorsAndConditions) {

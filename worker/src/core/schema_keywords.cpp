@@ -188,8 +188,10 @@ void SchemaChecker::check_object(const SchemaNode& n, const json& v, int depth) 
           names.push_back(name);
         }
       const std::string near = nearest_name(key, names);
-      add_at(key, "unknown key" + (near.empty() ? std::string() : "; did you mean '" + near + "'?") +
-                      (allowed.empty() ? std::string() : " (allowed: " + allowed + ")"));
+      const std::string reason = "unknown key" + (near.empty() ? std::string() : "; did you mean '" + near + "'?") +
+                                 (allowed.empty() ? std::string() : " (allowed: " + allowed + ")");
+      if (key.size() <= kQuotedPrefix) add_at(key, reason);
+      else add(reason.substr(0, 11) + " " + show_value(key) + reason.substr(11));  // at the object: a pointer would echo it whole
       continue;
     }
     path_.push_back(key);

@@ -7,7 +7,8 @@
 //   enum / const  "'superbe' is not one of fou, central, ..."
 //   minimum ...   "must be > 0, got -200"
 //   required      at the missing key: "required, but missing"
-//   additionalProperties: false   at each extra key: "unknown key (allowed: ...)"
+//   additionalProperties: false   at each extra key: "unknown key (allowed: ...)"; a key longer than
+//                                 kQuotedPrefix at its object, quoted by show_value
 //   pattern, min/maxLength, min/maxItems, uniqueItems (at the later duplicate)
 // Combinators report what lies below them: allOf all of its branches,
 // if/then/else the branch the value takes, anyOf/oneOf the problems of the
