@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <vector>
 
 #include "cmd_study.h"
@@ -22,27 +23,26 @@ void warn_close_grids(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';
 }
 
-// Grid-design warnings (extrap/grid_design.h) for every series, on stderr;
-// identical warnings of series that share their grids are printed once.
-void print_grid_warnings(const Study& study, const ExpandedStudy& ex) {
+// Grid-design warnings (extrap/grid_design.h) for every series; identical
+// warnings of series that share their grids are listed once.
+std::vector<std::string> grid_warnings(const Study& study, const ExpandedStudy& ex) {
+  std::vector<std::string> out;
   std::map<std::size_t, std::vector<double>> h;
   for (const auto& j : ex.jobs) h[j.series].push_back(j.delta_star);
   if (study.adaptive_grids) {  // judged on the whole ladder; its coarse rungs stay in every fit
     for (auto& [series, grids] : h) grids = study.grid_delta_star;
-    if (study.adaptive_grids->coarsest_delta_star > kAsymptoticDeltaStar)
-      std::cerr << "warning: /grids/coarsest_delta_star " << study.adaptive_grids->coarsest_delta_star << " > "
-                << kAsymptoticDeltaStar
-                << ": the coarse rungs stay in every fit of the series and can keep it pre-asymptotic "
-                   "(docs/EXTRAPOLATION.md \"Adaptive series\")\n";
-  }
-  std::vector<std::string> printed;
-  for (const auto& [series, grids] : h) {
-    for (const auto& w : grid_design_warnings(grids)) {
-      if (std::find(printed.begin(), printed.end(), w) != printed.end()) continue;
-      printed.push_back(w);
-      std::cerr << "warning: " << w << '\n';
+    if (study.adaptive_grids->coarsest_delta_star > kAsymptoticDeltaStar) {
+      std::ostringstream w;
+      w << "/grids/coarsest_delta_star " << study.adaptive_grids->coarsest_delta_star << " > " << kAsymptoticDeltaStar
+        << ": the coarse rungs stay in every fit of the series and can keep it pre-asymptotic "
+           "(docs/EXTRAPOLATION.md \"Adaptive series\")";
+      out.push_back(w.str());
     }
   }
+  for (const auto& [series, grids] : h)
+    for (const auto& w : grid_design_warnings(grids))
+      if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+  return out;
 }
 
 }  // namespace
@@ -55,7 +55,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     const Study study = parse_study(*file);
     const ExpandedStudy ex = expand(study);
     warn_close_grids(neighbour_warnings(grid_listing(study)));
-    print_grid_warnings(study, ex);
+    warn_close_grids(grid_warnings(study, ex));
     std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
@@ -88,12 +88,15 @@ void add_plan_command(CLI::App& app, int& exit_code) {
       throw InputError("--db", *db + " is not a readable gridfree database (" + e.what() + ")");
     }
     const Plan plan = make_plan(study, ex, std::max(1, *jobs), default_jobs(), history);
-    print_grid_warnings(study, ex);
     const auto grids = grid_listing(study);
-    const auto warnings = neighbour_warnings(grids);
     const double rde = *target > 0 ? *target : study.adaptive_grids ? study.adaptive_grids->target_rde : 0;
     std::optional<TargetPlan> tp;
     if (rde > 0) tp = plan_for_target(study, rde, prior_rde_model(*db, study), history);
+    // every warning, in the order printed on stderr, also in --json's "warnings"
+    auto warnings = grid_warnings(study, ex);
+    for (auto& w : neighbour_warnings(grids)) warnings.push_back(std::move(w));
+    if (tp)
+      for (auto& w : target_plan_warnings(*tp)) warnings.push_back(std::move(w));
     if (*json) {
       auto j = plan_to_json(plan);
       j["grids"] = grid_listing_json(grids);

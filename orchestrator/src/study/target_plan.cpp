@@ -16,6 +16,13 @@ namespace {
 
 std::string pct(double fraction) { return format_number("%.3g", 100 * fraction) + " %"; }
 
+std::string too_few_grids_text(const TargetCasePlan& c) {
+  return "the study gives case " + c.case_name + " " + std::to_string(c.grids.size()) +
+         " grids and a converged verdict needs " + std::to_string(kMinGridsForConverged) +
+         " (n - 3 >= 2 degrees of freedom): add " + std::to_string(kMinGridsForConverged - c.grids.size()) +
+         " more grid(s)";
+}
+
 }  // namespace
 
 double RdeModel::predict(double delta_star) const { return a * std::pow(delta_star, p); }
@@ -81,7 +88,8 @@ TargetPlan plan_for_target(const Study& s, double target, const RdeModel& model,
       if (first_met == ds.size() && g.predicted_rde <= target) first_met = k;
       cp.grids.push_back(g);
     }
-    cp.reachable = first_met < ds.size();
+    cp.enough_grids = ds.size() >= kMinGridsForConverged;
+    cp.reachable = first_met < ds.size() && cp.enough_grids;
     const std::size_t last = cp.reachable ? std::max(first_met, kMinGridsForConverged - 1) : ds.size() - 1;
     for (std::size_t k = 0; k < cp.grids.size() && k <= last; ++k) {
       cp.grids[k].needed = true;
@@ -139,6 +147,7 @@ nlohmann::json target_plan_json(const TargetPlan& p) {
     cases.push_back({{"case", c.case_name},
                      {"series", c.series},
                      {"reachable", c.reachable},
+                     {"enough_grids", c.enough_grids},
                      {"grids_needed", c.grids_needed},
                      {"core_hours_per_series", c.cpu_s_per_series / 3600},
                      {"peak_memory_bytes", c.peak_memory_bytes},
@@ -182,7 +191,10 @@ std::string target_plan_text(const TargetPlan& p) {
                     g.needed ? "yes" : "");
       out += line;
     }
-    if (c.reachable)
+    if (!c.enough_grids)
+      out += "  target not reachable: " + too_few_grids_text(c) + "; all " + std::to_string(c.grids_needed) +
+             " grids cost " + format_number("%.3g", c.cpu_s_per_series / 3600) + " core-hours per series\n";
+    else if (c.reachable)
       out += "  needs " + std::to_string(c.grids_needed) + " grids (Δ* " + format_number("%.4g", c.grids.front().delta_star) +
              " → " + format_number("%.4g", c.grids[c.grids_needed - 1].delta_star) + "): " +
              format_number("%.3g", c.cpu_s_per_series / 3600) + " core-hours per series, peak memory " +
@@ -194,6 +206,13 @@ std::string target_plan_text(const TargetPlan& p) {
   }
   out += "\ntotal: " + format_number("%.3g", p.total_cpu_s / 3600) + " core-hours, peak memory " +
          human_bytes(p.peak_memory_bytes) + "\n";
+  return out;
+}
+
+std::vector<std::string> target_plan_warnings(const TargetPlan& p) {
+  std::vector<std::string> out;
+  for (const auto& c : p.cases)
+    if (!c.enough_grids) out.push_back("--target-rde: " + too_few_grids_text(c));
   return out;
 }
 

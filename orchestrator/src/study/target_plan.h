@@ -13,7 +13,9 @@
 // list, coarse to fine. Needed: the grids from the coarsest down to the first
 // whose predicted RDE ≤ target, at least kMinGridsForConverged (a `converged`
 // verdict needs n − 3 ≥ 2 degrees of freedom, docs/EXTRAPOLATION.md
-// "Verdicts"; an adaptive series stops at its fifth grid at the earliest). Cost:
+// "Verdicts"; an adaptive series stops at its fifth grid at the earliest); a
+// case with fewer candidate grids is not reachable whatever the predictions
+// (enough_grids false, and the text says how many are missing). Cost:
 // the plan's history rule where the database holds jobs similar to the
 // grid's (study/cost_model.h), else the a-priori cost model's one-thread
 // CPU time (study/study_plan.h with the case's a-priori ratio) times the
@@ -66,7 +68,8 @@ struct TargetCasePlan {
   std::size_t series = 0;                   // series of the design on this case
   std::vector<TargetGrid> grids;            // coarse to fine
   std::size_t grids_needed = 0;
-  bool reachable = false;                   // some candidate grid meets the target
+  bool reachable = false;                   // some candidate grid meets the target, and there are enough grids
+  bool enough_grids = true;                 // at least kMinGridsForConverged candidate grids
   double cpu_s_per_series = 0;              // needed grids
   double peak_memory_bytes = 0;
   bool costs_from_history = false;          // some grid's cost ratio came from finished similar jobs
@@ -93,5 +96,8 @@ std::string rde_model_text(const RdeModel& model);  // the RDE model and what it
 std::string cost_basis_text(const TargetPlan& plan); // where the grids' costs come from
 nlohmann::json target_plan_json(const TargetPlan& plan);
 std::string target_plan_text(const TargetPlan& plan);
+// One line per case with fewer than kMinGridsForConverged grids (for the
+// warnings of `plan`, on stderr and in --json).
+std::vector<std::string> target_plan_warnings(const TargetPlan& plan);
 
 }  // namespace gridfree

@@ -78,6 +78,27 @@ TEST(TargetPlan, UnreachableTargetUsesEveryGridAndSaysSo) {
   EXPECT_FALSE(target_plan_json(plan)["cases"][0]["reachable"].get<bool>());
 }
 
+// Four grids can never give a converged verdict (n − 3 ≥ 2 needs five): a
+// target the predictions meet is still not reachable, and the text says so
+// instead of "needs 4 grids".
+TEST(TargetPlan, FewerThanFiveGridsAreNeverEnough) {
+  auto doc = quickstart_document();
+  doc["grids"] = {{"delta_star", {2.0, 1.5, 1.2, 1.0}}};
+  RdeModel m;
+  m.a = 0.01;
+  const auto plan = plan_for_target(study_of(doc), 0.05, m);  // every grid predicts ≤ 2 %
+  const auto& c = plan.cases.front();
+  EXPECT_FALSE(c.enough_grids);
+  EXPECT_FALSE(c.reachable);
+  EXPECT_EQ(c.grids_needed, 4u);
+  const std::string text = target_plan_text(plan);
+  EXPECT_EQ(text.find("needs 4 grids"), std::string::npos) << text;
+  EXPECT_NE(text.find("a converged verdict needs 5"), std::string::npos) << text;
+  EXPECT_FALSE(target_plan_json(plan)["cases"][0]["enough_grids"].get<bool>());
+  ASSERT_EQ(target_plan_warnings(plan).size(), 1u);
+  EXPECT_TRUE(target_plan_warnings(plan_for_target(quickstart_study(), 0.05, m)).empty());  // five grids
+}
+
 TEST(TargetPlan, CostScaleMultipliesTheCostModel) {
   RdeModel m;
   const auto one = plan_for_target(quickstart_study(), 0.01, m);
