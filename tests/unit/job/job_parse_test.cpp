@@ -122,6 +122,19 @@ TEST(ParseJob, OneCellAlongTheFlowAndAFilterWiderThanTheDomainAreRefused) {
   EXPECT_TRUE(has_problem(problems_of(j), "/numerics/deposition/fwhm_dp"));
 }
 
+// A uniform bed without particles (φ = 0) has no drag and nothing to verify:
+// refused at its pointer instead of running to not_converged.
+TEST(ParseJob, AUniformBedWithoutParticlesIsRefused) {
+  json j = test::contract_job();
+  j["case"]["particles"] = {{"uniform", {{"solids_fraction", 0}}}};
+  const auto problems = problems_of(j);
+  ASSERT_EQ(problems.size(), 1u) << format_problems(problems);
+  EXPECT_EQ(problems[0].where, "/case/particles/uniform/solids_fraction");
+  EXPECT_NE(problems[0].reason.find("> 0"), std::string::npos) << problems[0].reason;
+  j["case"]["particles"] = {{"uniform", {{"solids_fraction", 1e-3}}}};
+  EXPECT_NO_THROW(parse_job(j, "."));
+}
+
 TEST(ParseJob, StallWindowIsReadAndOutOfRangeRefused) {
   json j = test::contract_job();
   j["numerics"]["stall_window"] = 250;

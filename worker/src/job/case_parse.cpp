@@ -125,8 +125,10 @@ ParticleSource parse_particle_source(const nlohmann::json& obj, const std::strin
   UniformSpec u;
   const std::string at = child_pointer(where, "uniform");
   u.solids_fraction = read_number(read_object(obj, "uniform", where, problems, true), "solids_fraction", at, problems);
-  if (u.solids_fraction < 0 || u.solids_fraction >= 1)
-    problems.add(child_pointer(at, "solids_fraction"), "must be in [0, 1)");
+  if (!(u.solids_fraction > 0 && u.solids_fraction < 1))  // φ = 0: no particles, no drag, nothing to verify
+    problems.add(child_pointer(at, "solids_fraction"),
+                 "must be in (0, 1): a bed without particles has no drag, and its dp* would be only the gas's "
+                 "wall friction (docs/INTERFACE.md)");
   return u;
 }
 
