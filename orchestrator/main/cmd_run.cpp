@@ -101,14 +101,19 @@ int run_study(const RunOptions& ro) {
     throw InputError("--executor", *fatal + "; nothing more was submitted, the study's jobs are queued again (no "
                                             "attempt spent): fix the cause and run again");
   // 4. Report and exit code.
-  finish_ready_series(store, sub.study_id);
-  // After a stop the report is left for the next run (a large study's report
-  // takes minutes; the stop must not wait for it).
-  const bool report_ok = sum.interrupted || (refresh_report(store, sub.study_id, options) && sum.reports_failed == 0);
+  // Written once: the scheduler's write after the last job stands unless
+  // something changed since (sched/scheduler.h, reports_current). After a
+  // stop the report is left for the next run (a large study's report takes
+  // minutes; the stop must not wait for it).
+  const bool changed = finish_ready_series(store, sub.study_id) > 0 || !sum.reports_current;
+  const bool report_ok =
+      sum.interrupted || ((!changed || refresh_report(store, sub.study_id, options)) && sum.reports_failed == 0);
   const auto st = store.statuses(sub.study_id).front();
   std::cerr << "study " << st.name << ": " << st.status << " — " << st.converged << "/" << st.jobs
             << " jobs converged, " << st.failed << " failed";
   if (sum.interrupted) std::cerr << " (interrupted; run again to resume)";
+  const bool cancelled = !sum.interrupted && st.status == "cancelled";
+  if (cancelled) std::cerr << " (cancelled; run again to resume)";
   // Only a report that exists is named; a failed write is an error (exit 1).
   const auto html = options.report_dir(st.name) / "report.html";
   std::error_code ec;
@@ -116,7 +121,7 @@ int run_study(const RunOptions& ro) {
     std::cerr << "\nreport: not rewritten (interrupted; the next run or `gridfree report` writes it)\n";
   else if (report_ok && std::filesystem::is_regular_file(html, ec)) std::cerr << "\nreport: " << html.string() << '\n';
   else std::cerr << "\nreport: not written (see the error above); the results are in the database\n";
-  if (sum.interrupted) return to_int(ExitCode::kInterrupted);
+  if (sum.interrupted || cancelled) return to_int(ExitCode::kInterrupted);  // a cancel is an interruption
   if (!report_ok) return to_int(ExitCode::kInternalError);
   if (st.status == "done") return to_int(ExitCode::kOk);
   return to_int(ExitCode::kNotConverged);

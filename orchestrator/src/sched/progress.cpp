@@ -63,9 +63,10 @@ std::string progress_line(const ProgressCounts& c) {
          std::to_string(c.running) + ", failed " + std::to_string(c.failed) + ", ETA " + eta;
 }
 
-void Progress::job_finished(const std::string& what, const ProgressCounts& c) {
-  if (!terminal_) {
-    spdlog::info("{} {}", progress_line(c), what);
+void Progress::job_finished(const std::string& what, const ProgressCounts& c, bool failed) {
+  if (!terminal_) {  // "[3/8] running 2, failed 0, ETA 4 min | PC1 …: converged …"
+    if (failed) spdlog::warn("{} | {}", progress_line(c), what);
+    else spdlog::info("{} | {}", progress_line(c), what);
     return;
   }
   std::fprintf(out_, "\r\033[K%s\n", what.c_str());

@@ -3,7 +3,7 @@
 // (ETA = eta_s when given — the cost model scaled by measured times,
 // sched/study_eta.h — else mean wall time of finished jobs × remaining
 // jobs / workers);
-// otherwise one plain log line per finished job. On a terminal the default
+// otherwise one plain log line per finished job (counts | job: outcome). On a terminal the default
 // logger's output is routed through the Progress while it lives: the
 // progress line is cleared before every log line and redrawn after it, so
 // the two never share a line.
@@ -36,8 +36,9 @@ class Progress {
   Progress& operator=(const Progress&) = delete;
   // A log line (already formatted, with its newline): printed above the progress line.
   void print_above(const std::string& text);
-  // A job finished: `what` = "PC1 superbee fwhm6 bvk Δ*=1.25: converged dp*=1158.9".
-  void job_finished(const std::string& what, const ProgressCounts& c);
+  // A job finished: `what` = "PC1 superbee fwhm6 bvk Δ*=1.25: converged dp*=1158.9";
+  // off a terminal logged after the counts and " | ", at warn when `failed`.
+  void job_finished(const std::string& what, const ProgressCounts& c, bool failed = false);
   void update(const ProgressCounts& c);  // redraw (terminal only)
   void finish();                          // ends the updating line
 

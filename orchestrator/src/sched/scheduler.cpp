@@ -200,6 +200,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     for (long long id : pacer.pending(all_pending ? std::nullopt : std::optional<double>(seconds_now()))) {
       const double started = seconds_now();
       if (!refresh_report(store, id, o)) ++sum.reports_failed;
+      else sum.reports_current = true;
       pacer.written(id, started, seconds_now());
     }
   };
@@ -284,14 +285,17 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     const InFlight f = it->second;
     running.erase(it);
     // 3. record it
+    sum.reports_current = false;
     JobOutcome out = classify_exit(*exit);
     std::string what = f.label + ": ";
+    bool failed = true;  // logged at warn unless converged or released
     if (out.kind == OutcomeKind::kFinal) {
       if (store.record_result(f.job.job_id, o.owner, out.row)) remove_checkpoint(exit->run_dir);
       ++sum.finished;
       tally.job_finished(out.row.status == "converged", out.row.wall_s);
       if (out.row.status == "converged") {
         ++sum.converged;
+        failed = false;
         char buf[64];
         std::snprintf(buf, sizeof buf, "converged dp* = %.6g (%.1f s)", *out.row.dp_star, out.row.wall_s);
         what += buf;
@@ -315,9 +319,10 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     } else {
       store.release(f.job.job_id, o.owner, out.row.reason);
       tally.job_requeued();
+      failed = false;
       what += "released: " + out.row.reason;
     }
-    if (o.progress) o.progress->job_finished(what, tally.current());
+    if (o.progress) o.progress->job_finished(what, tally.current(), failed);
     sweep_job(f.job.job_id);
   }
 
@@ -326,6 +331,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     for (long long id : executor.kill_all()) {
       store.release(id, o.owner, "interrupted: requeued for the next run");
       ++sum.requeued;
+      sum.reports_current = false;
     }
     running.clear();
   }

@@ -54,6 +54,9 @@ struct SchedulerSummary {
   bool interrupted = false;
   int reports_failed = 0;  // report writes that failed (logged)
   int requeued = 0;        // running jobs stopped and requeued on a stop request
+  // A report was written after the last job outcome this loop recorded (and
+  // nothing was requeued since): `run` need not write its final one again.
+  bool reports_current = false;
 };
 
 // Startup recovery: requeues running jobs whose owner process is gone and

@@ -6,8 +6,11 @@
 // job, and `plan` lists every grid and warns about close neighbours.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +19,7 @@
 #include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
+#include "wait_until.h"
 
 namespace {
 
@@ -112,6 +116,51 @@ TEST(StudyLifecycle, CancelAndResubmitSayWhatTheyDo) {
   EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT status FROM studies WHERE name = 'queued'"), "queued");
   const CommandRun same = gridfree_in(dir, "submit q.json --db g.sqlite");
   EXPECT_NE(same.out.find("already submitted (nothing changed) queued"), std::string::npos) << same.out;
+}
+
+// Off a terminal: one line per finished job with " | " between the counts
+// (and their ETA) and the job, failures at warn, converged jobs at info; the
+// report is written once at the end of a run, not twice.
+TEST(StudyLifecycle, RunLogLinesSeparateTheJobAndTheReportIsWrittenOnce) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "loglines");
+  write_one_series_study(dir, "n.json", "n", "noconv", {5.0, 4.0});
+  const CommandRun r = gridfree_in(dir, "run n.json -j 1 --db g.sqlite");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  std::size_t failed_lines = 0, reports = 0;
+  std::istringstream err(r.err);
+  for (std::string line; std::getline(err, line);) {
+    if (line.find("charts written to") != std::string::npos) ++reports;
+    if (line.find("] running ") == std::string::npos) continue;
+    EXPECT_NE(line.find(" | noconv "), std::string::npos) << line;
+    EXPECT_NE(line.find("[warning]"), std::string::npos) << line;
+    ++failed_lines;
+  }
+  EXPECT_EQ(failed_lines, 2u) << r.err;
+  EXPECT_EQ(reports, 1u) << r.err;
+  write_one_series_study(dir, "o.json", "o", "ok", {5.0});
+  const CommandRun ok = gridfree_in(dir, "run o.json -j 1 --db g.sqlite");
+  EXPECT_NE(ok.err.find("[info] [1/1] running 0, failed 0, ETA "), std::string::npos) << ok.err;
+  EXPECT_NE(ok.err.find(" | ok "), std::string::npos) << ok.err;
+}
+
+// `cancel` while `run` works the study: the running job finishes and run
+// exits 130 (interrupted; the exit-code table), saying so — not 3, which
+// means jobs failed.
+TEST(StudyLifecycle, ACancelledRunExitsAsInterrupted) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("lifecycle_cli_test", "cancelrun");
+  write_one_series_study(dir, "c.json", "c", "ok", {5.0, 4.0, 3.3, 2.5});
+  const pid_t pid = gridfree::test_support::spawn_gridfree_in(dir, "run c.json -j 1 --db g.sqlite", "1");
+  ASSERT_TRUE(gridfree::test_support::wait_until(
+      [&] { return gridfree::test_support::sqlite_int(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs WHERE status = 'running'") >= 1; },
+      60));
+  EXPECT_EQ(gridfree_in(dir, "cancel c --db g.sqlite").exit_code, 0);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  std::ifstream log(dir / "spawned.log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("(cancelled; run again to resume)"), std::string::npos) << text;
 }
 
 TEST(StudyLifecycle, StudyTimeoutKillsAHangingJob) {

@@ -2,9 +2,11 @@
 // (sched/progress.h): a log line written while the progress line is open
 // first clears it ("\r\033[K"), then the progress line is drawn again.
 #include <cstdio>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 
 #include "sched/progress.h"
@@ -51,6 +53,32 @@ TEST(Progress, WithoutATerminalLogsGoToTheLoggerUntouched) {
   }
   EXPECT_EQ(contents(f), "");  // no progress line, no escape codes
   std::fclose(f);
+}
+
+// Off a terminal a finished job is one log line: the counts, " | ", the job
+// and its outcome (the ETA never runs into the job's name); a failure at warn.
+TEST(Progress, WithoutATerminalAFinishedJobIsOneLineAndFailuresWarn) {
+  std::ostringstream log;
+  auto logger = spdlog::default_logger();
+  const auto saved = logger->sinks();
+  auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(log);
+  sink->set_pattern("[%l] %v");
+  logger->sinks() = {sink};
+  {
+    Progress progress(false, stderr);
+    ProgressCounts c;
+    c.total = 2;
+    c.done = 1;
+    c.eta_s = 240;
+    progress.job_finished("PC1 Δ*=2: converged", c);
+    c.failed = 1;
+    progress.job_finished("PC1 Δ*=1: failed: worker crashed", c, true);
+  }
+  logger->sinks() = saved;
+  const std::string text = log.str();
+  EXPECT_NE(text.find("[info] [1/2] running 0, failed 0, ETA 4 min | PC1 Δ*=2: converged\n"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("[warning] [2/2] running 0, failed 1, ETA 4 min | PC1 Δ*=1: failed"), std::string::npos) << text;
 }
 
 }  // namespace
