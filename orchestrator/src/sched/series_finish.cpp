@@ -47,15 +47,18 @@ std::string fixed(double v, int digits) {
   return buf;
 }
 
-// "verdict converged: f0 = 1017.12, U(finest) = 1.3 (0.13 %)" — never "ok".
+// "verdict converged: f0 = 1017.001 ± 1.478, finest f1 = 1015.872 ± 1.478 (RDE 0.15 %)" — never "ok".
 std::string verdict_log_text(const nlohmann::json& ex, const VerdictRow& verdict) {
   std::string out = "verdict " + verdict.value;
   const auto f0 = num(ex, "f0");
+  // Each value with its own interval: f0 ± U₀, the finest grid's f₁ ± U₁.
   if (f0) out += ": f0 = " + fixed(*f0, 3);
+  if (const auto u0 = num(ex, "u0"); f0 && u0) out += " ± " + fixed(*u0, 3);
   if (ex.contains("grids") && ex["grids"].is_array() && !ex["grids"].empty()) {
+    const auto f1 = num(ex["grids"][0], "f");
     const auto u = num(ex["grids"][0], "u");
     const auto rde = num(ex["grids"][0], "rde");
-    if (u) out += ", U(finest) = " + fixed(*u, 3);
+    if (f1 && u) out += ", finest f1 = " + fixed(*f1, 3) + " ± " + fixed(*u, 3);
     if (rde) out += " (RDE " + fixed(100 * *rde, 2) + " %)";
   }
   const auto reasons = nlohmann::json::parse(verdict.reasons_json, nullptr, false);
