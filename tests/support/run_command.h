@@ -42,6 +42,24 @@ inline CommandRun run_command(const std::string& command, const std::filesystem:
   return r;
 }
 
+// `command` through /bin/sh with stderr merged into stdout: its exit code
+// (-1: could not start, or ended by a signal) and the merged text.
+struct MergedRun {
+  int code = -1;
+  std::string text;
+};
+
+inline MergedRun run_merged(const std::string& command) {
+  MergedRun r;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) r.text += buf.data();
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
 // `query` run by the sqlite3 shell on `db`; its output without trailing
 // newlines (stderr kept beside the database in sql.txt).
 inline std::string sqlite_query(const std::filesystem::path& db, const std::string& query) {

@@ -41,23 +41,13 @@ fs::path temp_dir(const std::string& name) { return gridfree::test_support::fres
 
 using gridfree::test_support::shell_quote;
 
-struct Output {
-  int code = -1;
-  std::string text;
-};
+using Output = gridfree::test_support::MergedRun;
 
 // Runs a shell command line in `dir` with the fake worker; stdout+stderr.
 Output gridfree_merged(const fs::path& dir, const std::string& args, const std::string& env = "") {
-  const std::string cmd = "cd " + shell_quote(dir.string()) +
-                          " && GRIDFREE_WORKER=" + shell_quote(kFakeWorker.string()) + " " + env + " " +
-                          shell_quote(kGridfreeExe.string()) + " " + args + " 2>&1";
-  Output out;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, p) != nullptr) out.text += buf;
-  const int status = pclose(p);
-  out.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
+  return gridfree::test_support::run_merged("cd " + shell_quote(dir.string()) + " && GRIDFREE_WORKER=" +
+                                            shell_quote(kFakeWorker.string()) + " " + env + " " +
+                                            shell_quote(kGridfreeExe.string()) + " " + args);
 }
 
 // A study with one series per case name (the fake worker's mode) on 4 grids.

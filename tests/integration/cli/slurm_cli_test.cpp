@@ -31,24 +31,15 @@ using gridfree::test_support::kGridfreeExe;
 using gridfree::test_support::shell_quote;
 using gridfree::test_support::sqlite_query;
 
-struct Run {
-  int code = -1;
-  std::string text;  // stdout + stderr
-};
+using Run = gridfree::test_support::MergedRun;
 
 // gridfree in `dir` with the fake worker, PATH = `path`, more variables in `env`.
 Run slurm_gridfree(const fs::path& dir, const std::string& args, const std::string& path,
                    const std::string& env = "") {
-  const std::string cmd = "cd " + shell_quote(dir.string()) + " && env PATH=" + shell_quote(path) +
-                          " GRIDFREE_WORKER=" + shell_quote(kFakeWorker.string()) + " " + env + " " +
-                          shell_quote(kGridfreeExe.string()) + " " + args + " 2>&1";
-  Run r;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, p) != nullptr) r.text += buf;
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return gridfree::test_support::run_merged("cd " + shell_quote(dir.string()) + " && env PATH=" +
+                                            shell_quote(path) + " GRIDFREE_WORKER=" +
+                                            shell_quote(kFakeWorker.string()) + " " + env + " " +
+                                            shell_quote(kGridfreeExe.string()) + " " + args);
 }
 
 // Fake sbatch/squeue/scancel in dir/bin. sbatch logs its arguments to
