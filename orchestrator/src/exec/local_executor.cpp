@@ -209,6 +209,17 @@ void LocalExecutor::enforce_deadlines() {
   }
 }
 
+namespace {
+
+// The worker exited by itself with a result (0 converged, 3 not converged):
+// when that happens after our timeout's SIGTERM, it had finished before the
+// stop reached it, and its result stands (a finished result is never lost).
+bool finished_normally(int status) {
+  return WIFEXITED(status) && (WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 3);
+}
+
+}  // namespace
+
 std::optional<JobExit> LocalExecutor::reap_one() {
   for (auto it = running_.begin(); it != running_.end(); ++it) {
     int status = 0;
@@ -221,7 +232,7 @@ std::optional<JobExit> LocalExecutor::reap_one() {
     if (r < 0) {
       e.how = JobExit::How::kLost;
       e.detail = std::strerror(errno);
-    } else if (it->second.timed_out) {
+    } else if (it->second.timed_out && !finished_normally(status)) {
       e.how = JobExit::How::kTimedOut;
       char after[64];
       std::snprintf(after, sizeof after, "no result after %g s", it->second.timeout_s);

@@ -114,6 +114,18 @@ TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
   EXPECT_LT(e.wall_s, 5.0);  // well before the 30 s grace: it ended on SIGTERM
 }
 
+// A worker that finished as the timeout's SIGTERM reached it exits 0 with its
+// result: that is an ordinary exit, and the result is kept, not retried.
+TEST(LocalExecutor, AResultWrittenAsTheTimeoutArrivesIsAnOrdinaryExit) {
+  const auto root = temp_dir("timeout_late_result");
+  LocalExecutor ex(kFakeWorker, kStopGraceSeconds);
+  ex.start(launch(root, 1, "lateok", 0.5));
+  const auto e = wait_for(ex);
+  EXPECT_EQ(e.how, JobExit::How::kExited);
+  EXPECT_EQ(e.code, 0);
+  EXPECT_TRUE(fs::exists(e.run_dir / "result.json"));
+}
+
 // ... and SIGKILL after the grace period when SIGTERM is ignored.
 TEST(LocalExecutor, TimeoutEndsAWorkerIgnoringSigtermAfterTheGrace) {
   const auto e = timed_out("timeout_kill", "stubborn", 0.3, 0.5);
