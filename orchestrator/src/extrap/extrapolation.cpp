@@ -22,7 +22,7 @@ void constant_result(const Series& s, ExtrapolationResult& out) {
   out.method = "constant";
   out.f0 = f0;
   out.sigma_re = 0.0;
-  out.fs = 1.25;
+  out.fs = kMinSafetyFactor;
   out.u0 = 0.0;
   out.power = FitSummary{};
   out.power->f0 = f0;

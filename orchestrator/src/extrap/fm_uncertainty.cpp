@@ -12,7 +12,7 @@
 namespace gridfree {
 
 double fm_safety_factor(double sigma_re, double range) {
-  return std::max(1.25, 3.0 * sigma_re / range);
+  return std::max(kMinSafetyFactor, 3.0 * sigma_re / range);
 }
 
 double fm_uncertainty(double f0, double f_i, double sigma_re, double fs) {
@@ -20,7 +20,7 @@ double fm_uncertainty(double f0, double f_i, double sigma_re, double fs) {
 }
 
 double extrapolated_value_uncertainty(double f0, double f_finest, double sigma_re) {
-  return 1.25 * std::fabs(f0 - f_finest) + sigma_re;
+  return kMinSafetyFactor * std::fabs(f0 - f_finest) + sigma_re;
 }
 
 namespace {

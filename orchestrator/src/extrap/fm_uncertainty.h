@@ -21,6 +21,9 @@
 
 namespace gridfree {
 
+// The smallest safety factor (FM18, after Roache's 1.25 for a three-grid study).
+inline constexpr double kMinSafetyFactor = 1.25;
+
 // Fs = max(1.25, 3σ/R_f)  (R_f > 0).
 double fm_safety_factor(double sigma_re, double range);
 
