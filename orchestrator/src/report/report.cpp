@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <set>
 #include <sstream>
 
 #include <spdlog/spdlog.h>
@@ -14,6 +16,8 @@
 #include "report/chart_export.h"
 #include "report/report_content.h"
 #include "report/report_ensembles.h"
+#include "report/report_tables.h"
+#include "report/series_page.h"
 
 namespace gridfree {
 
@@ -21,14 +25,15 @@ namespace {
 
 // Per-series charts of an earlier run whose series no longer exist (e.g. a
 // study redefined under the same name) would be misleading: remove them; so
-// would speed-accuracy charts once no series is converged (report_charts.cpp).
+// would speed-accuracy charts once no series is converged (report_charts.cpp)
+// and the RDE charts of the other layout (report_layout.h).
 void remove_stale_charts(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& written) {
   std::error_code ec;
   std::vector<std::filesystem::path> stale;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
     const bool per_series = name.rfind("fig1_", 0) == 0 || name.rfind("gci_", 0) == 0 ||
-                            name.rfind("speed_accuracy", 0) == 0;
+                            name.rfind("speed_accuracy", 0) == 0 || name.rfind("fig2_rde", 0) == 0;
     const auto ext = entry.path().extension();
     if (!per_series || (ext != ".svg" && ext != ".pdf" && ext != ".png")) continue;
     auto as_svg = entry.path();
@@ -46,6 +51,60 @@ std::string read_file(const std::filesystem::path& file) {
   return s.str();
 }
 
+// Writes `text` unless the file already holds it; true when written.
+bool write_if_changed(const std::filesystem::path& file, const std::string& text) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  if (!ec && size == text.size() && read_file(file) == text) return false;
+  write_file_atomically(file, text);
+  return true;
+}
+
+// Summary layout (report_layout.h): series/<slug>.html and its charts, one
+// series at a time (memory stays that of one series), each file written
+// only when its bytes changed; files of series no longer in the study are
+// removed. Per-series charts get no PDF/PNG copies here: thousands of
+// conversions would take longer than the study's jobs.
+void write_series_pages(const ReportContent& content, const std::filesystem::path& out_dir, ReportFiles& files,
+                        const std::function<void()>& check_stop) {
+  const auto dir = out_dir / "series";
+  std::filesystem::create_directories(dir);
+  remove_stale_temporaries(dir);
+  const SeriesRowIndex rows = series_row_index(content);
+  std::set<std::string> current;
+  int rewritten = 0;
+  for (std::size_t i = 0; i < content.series.size(); ++i) {
+    check_stop();
+    const auto charts = series_charts(content.series, i);
+    std::vector<std::string> svgs;  // rendered once: the file and the page's inline copy
+    for (const auto& c : charts) {
+      svgs.push_back(render_svg(c.chart));
+      current.insert(c.file);
+      if (write_if_changed(dir / c.file, kSvgDeclaration + svgs.back())) ++rewritten;
+      files.svg.push_back(dir / c.file);
+    }
+    const auto page = std::filesystem::path(series_page_file(content, i)).filename();
+    current.insert(page.string());
+    if (write_if_changed(dir / page, render_series_page(content, rows, i, charts, svgs))) ++rewritten;
+  }
+  std::error_code ec;
+  std::vector<std::filesystem::path> stale;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (!current.count(entry.path().filename().string())) stale.push_back(entry.path());
+  for (const auto& path : stale) std::filesystem::remove(path, ec);
+  spdlog::debug("report: {} series pages, {} files rewritten, {} stale removed", content.series.size(), rewritten,
+                stale.size());
+}
+
+// A table of every series written series by series: the text of the CSV,
+// never the whole Table (report_content.h, head_of_series_tables).
+std::string csv_by_series(const std::vector<SeriesSummary>& series,
+                          Table (*of_series)(const std::vector<SeriesSummary>&)) {
+  std::string out = to_csv(of_series({}));
+  for (const auto& s : series) out += to_csv(of_series({s}), false);
+  return out;
+}
+
 }  // namespace
 
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,
@@ -56,7 +115,7 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
 
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,
                                const Extrapolator& extrapolate, const StopRequested& stop) {
-  const auto check_stop = [&stop] {
+  const std::function<void()> check_stop = [&stop] {
     if (stop && stop()) throw ReportInterrupted();
   };
   std::filesystem::create_directories(out_dir);
@@ -65,9 +124,12 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
   ReportFiles files;
   for (const NamedTable* t : {&content.grids_table, &content.series_table, &content.differences_table,
                               &content.cost_table, &content.gci_table, &content.failures_table,
-                              &content.coverage_table}) {
+                              &content.coverage_table, &content.verdict_count_table}) {
     files.csv.push_back(out_dir / t->file);
-    write_file_atomically(files.csv.back(), to_csv(t->table));
+    const bool in_parts = content.layout == ReportLayout::summary && (t == &content.grids_table || t == &content.gci_table);
+    write_file_atomically(files.csv.back(),
+                          in_parts ? csv_by_series(content.series, t == &content.grids_table ? grids_table : gci_table)
+                                   : to_csv(t->table));
   }
   if (!content.alignment.empty()) {  // only for a study that ran the alignment check
     files.csv.push_back(out_dir / content.alignment_table.file);
@@ -96,6 +158,13 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
       c.converted = {pdf.filename().string(), png.filename().string()};
     else
       c.converted = export_chart(converter, files.svg.back(), stop);
+  }
+  check_stop();
+  if (content.layout == ReportLayout::summary) {
+    write_series_pages(content, out_dir, files, check_stop);
+  } else {
+    std::error_code ec;  // a study that shrank to one page keeps no series pages
+    std::filesystem::remove_all(out_dir / "series", ec);
   }
   check_stop();
   remove_stale_charts(out_dir, files.svg);

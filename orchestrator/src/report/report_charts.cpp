@@ -2,38 +2,93 @@
 #include "report/report_charts.h"
 
 #include "report/chart_common.h"
+#include "report/chart_rde_bands.h"
+#include "report/text_format.h"
 
 namespace gridfree {
 
-std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde) {
-  std::vector<NamedChart> out;
-  out.push_back({"fig2_rde.svg",
-                 "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
-                 rde_chart(series, target_rde), {}});
-  // The speed-accuracy charts recommend grids: written only when a converged
-  // series has a front to draw (chart_pareto.h).
+namespace {
+
+// The speed-accuracy charts recommend grids: written only when a converged
+// series has a front to draw (chart_pareto.h). `note`: what was sampled.
+void add_speed_accuracy(std::vector<NamedChart>& out, const std::vector<SeriesSummary>& series,
+                        const std::string& note) {
   Chart cpu = speed_accuracy_chart(series, CostMeasure::cpu_seconds);
-  if (!cpu.series.empty())
+  if (!cpu.series.empty()) {
+    if (!note.empty()) cpu.note = note + (cpu.note.empty() ? "" : ". " + cpu.note);
     out.push_back({"speed_accuracy.svg",
                    "CPU time against a-priori RDE: the Pareto front of each converged series connected, dominated "
                    "grids faded, series not converged hollow and never on a front; the cheapest grid for a target "
                    "RDE is the lowest front point left of it.",
                    std::move(cpu), {}});
+  }
   Chart work = speed_accuracy_chart(series, CostMeasure::cell_iterations);
-  if (!work.series.empty())
+  if (!work.series.empty()) {
+    if (!note.empty()) work.note = note + (work.note.empty() ? "" : ". " + work.note);
     out.push_back({"speed_accuracy_work.svg",
                    "The same with the machine-independent cost cells × outer iterations.", std::move(work), {}});
-  for (std::size_t i = 0; i < series.size(); ++i) {
-    const std::string slug = series_slug(series[i], i);
-    out.push_back({"fig1_" + slug + ".svg", "DP* against Δ* for " + series[i].label + ", with the fits, f0 and U.",
-                   series_chart(series[i], i), {}});
-    if (series[i].extrapolation && !series[i].extrapolation->gci.empty()) {
-      out.push_back({"gci_" + slug + ".svg",
-                     "Classic three-grid extrapolation of every consecutive triplet for " + series[i].label +
-                         ": its GCI band (marker = convergence type) and φ_ext, beside the regression.",
-                     gci_chart(series[i], i), {}});
-    }
   }
+}
+
+}  // namespace
+
+std::vector<std::size_t> sample_indices(std::size_t n, std::size_t max) {
+  std::vector<std::size_t> out;
+  if (n <= max) {
+    for (std::size_t i = 0; i < n; ++i) out.push_back(i);
+    return out;
+  }
+  if (max == 1) return {0};
+  for (std::size_t k = 0; k < max; ++k) out.push_back(k * (n - 1) / (max - 1));
+  return out;
+}
+
+std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde,
+                                     ReportLayout layout) {
+  std::vector<NamedChart> out;
+  if (layout == ReportLayout::full_page) {
+    out.push_back({"fig2_rde.svg",
+                   "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
+                   rde_chart(series, target_rde), {}});
+    add_speed_accuracy(out, series, "");
+    return out;
+  }
+  auto factors = band_factors(series);
+  if (factors.empty()) factors.push_back("");
+  for (const auto& factor : factors) {
+    const std::string name = factor.empty() ? "all" : slugify(factor);
+    out.push_back({"fig2_rde_" + name + ".svg",
+                   "RDE of every grid (docs/PHYSICS.md §8), aggregated " +
+                       (factor.empty() ? std::string("over all series") : "by " + factor) +
+                       ": the median and the 10–90 % band at each Δ*; each series' own RDE chart is on its page.",
+                   rde_band_chart(series, factor, target_rde), {}});
+  }
+  std::vector<SeriesSummary> sample;
+  for (std::size_t i : sample_indices(series.size(), kChartSeries)) sample.push_back(series[i]);
+  add_speed_accuracy(out, sample,
+                     std::to_string(sample.size()) + " of " + std::to_string(series.size()) +
+                         " series drawn, evenly spaced in study order; every grid's cost and RDE in grids.csv");
+  return out;
+}
+
+std::vector<NamedChart> series_charts(const std::vector<SeriesSummary>& series, std::size_t i) {
+  std::vector<NamedChart> out;
+  const std::string slug = series_slug(series[i], i);
+  out.push_back({"fig1_" + slug + ".svg", "DP* against Δ* for " + series[i].label + ", with the fits, f0 and U.",
+                 series_chart(series[i], i), {}});
+  if (series[i].extrapolation && !series[i].extrapolation->gci.empty()) {
+    out.push_back({"gci_" + slug + ".svg",
+                   "Classic three-grid extrapolation of every consecutive triplet for " + series[i].label +
+                       ": its GCI band (marker = convergence type) and φ_ext, beside the regression.",
+                   gci_chart(series[i], i), {}});
+  }
+  return out;
+}
+
+std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde) {
+  auto out = study_charts(series, target_rde, ReportLayout::full_page);
+  for (std::size_t i = 0; i < series.size(); ++i)
+    for (auto& c : series_charts(series, i)) out.push_back(std::move(c));
   return out;
 }
 

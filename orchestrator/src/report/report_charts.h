@@ -1,5 +1,6 @@
 // The report's charts, in display order; each chart has its own builder:
-//   fig2_rde.svg                chart_rde.h
+//   fig2_rde.svg                chart_rde.h (full page)
+//   fig2_rde_<factor>.svg       chart_rde_bands.h (summary layout, report_layout.h)
 //   speed_accuracy.svg          chart_pareto.h (CPU time)
 //   speed_accuracy_work.svg     chart_pareto.h (cells × iterations)
 //   fig1_NN_<series>.svg        chart_series.h
@@ -14,6 +15,7 @@
 #include "report/chart_pareto.h"
 #include "report/chart_rde.h"
 #include "report/chart_series.h"
+#include "report/report_layout.h"
 #include "report/series_summary.h"
 #include "report/svg_chart.h"
 
@@ -26,9 +28,22 @@ struct NamedChart {
   std::vector<std::string> converted;  // PDF/PNG copies written beside the SVG (chart_export.h)
 };
 
-// All charts of a report: the overview charts, then per series its Fig. 1
-// chart and (when it has GCI triplets) its GCI chart.
+// The study-wide charts. Full page: fig2_rde.svg with a line per series and
+// the speed-accuracy charts of every series. Summary layout: one RDE band
+// chart per factor of 2 to 8 levels (one over all series when there is
+// none), and speed-accuracy charts of at most kChartSeries series sampled
+// evenly in study order, the chart's note saying how many of how many.
+std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde,
+                                     ReportLayout layout);
+
+// Series i's Fig. 1 chart and (when it has GCI triplets) its GCI chart.
+std::vector<NamedChart> series_charts(const std::vector<SeriesSummary>& series, std::size_t i);
+
+// A full-page report's charts: study_charts, then every series' charts.
 std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series,
                                       std::optional<double> target_rde = std::nullopt);
+
+// Indices of at most `max` of n items, evenly spaced, first and last included.
+std::vector<std::size_t> sample_indices(std::size_t n, std::size_t max);
 
 }  // namespace gridfree

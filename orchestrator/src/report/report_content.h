@@ -12,6 +12,7 @@
 #include "report/report_charts.h"
 #include "report/report_data.h"
 #include "report/report_ensembles.h"
+#include "report/report_layout.h"
 #include "report/series_summary.h"
 #include "report/table.h"
 
@@ -21,14 +22,22 @@ struct NamedTable {
   std::string file;     // CSV file name
   std::string title;    // section heading
   Table table;
+  // Summary layout's grids and GCI tables: `table` holds the first rows, the
+  // CSV is written series by series (report.cpp); this is the whole count.
+  std::size_t total_rows = 0;
+  std::size_t rows() const { return total_rows > table.rows.size() ? total_rows : table.rows.size(); }
 };
 
 struct ReportContent {
-  StudyReportData data;                    // as given (series in the given order)
+  StudyReportData data;                    // as given, without its series (those are in `series`)
+  ReportLayout layout = ReportLayout::full_page;  // report_layout.h: summary beyond kFullPageSeries series
   std::vector<SeriesSummary> series;
   std::vector<SeriesDifference> differences;
   NamedTable series_table, differences_table, cost_table, gci_table, grids_table, failures_table;
   NamedTable coverage_table;               // the coverage self-check (series_coverage.h)
+  NamedTable verdict_count_table;          // verdicts per factor level (verdict_counts.h)
+  // Full page: every chart; summary layout: the study-wide charts only (each
+  // series' charts are on its page, report/series_page.h).
   std::vector<NamedChart> charts;
   std::vector<AlignmentLine> alignment;    // empty unless the study ran the alignment check
   NamedTable alignment_table;
@@ -47,5 +56,14 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
 // Report documents; chart files are referenced by their NamedChart::file.
 std::string render_markdown(const ReportContent& content);
 std::string render_html(const ReportContent& content);  // self-contained: CSS and SVG inline
+
+// The grids and GCI tables of the summary layout: the first rows of the
+// whole table and its row count, without holding every row (48 600 grids
+// take 85 MB as a Table); `of_series` makes the table of one series.
+NamedTable head_of_series_tables(const std::vector<SeriesSummary>& series, std::string file, std::string title,
+                                 Table (*of_series)(const std::vector<SeriesSummary>&));
+
+// Summary layout: series i's page, series/<slug>.html (report/series_page.cpp).
+std::string series_page_file(const ReportContent& content, std::size_t i);
 
 }  // namespace gridfree

@@ -1,89 +1,79 @@
 // report.html: one self-contained page (inline CSS, inline SVG charts, no
-// scripts, no external resources), with the same content as report.md.
+// external resources), with the same content as report.md. Full page: every
+// series on it, no scripts. Summary layout (report_layout.h): the study's
+// overview, each series on its page (series_page.cpp), and one small inline
+// script, the series table's filter (the page reads without it).
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "report/adaptive_section.h"
+#include "report/html_blocks.h"
 #include "report/html_toc.h"
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
 #include "report/text_format.h"
+#include "report/verdict_counts.h"
 
 namespace gridfree {
 
 namespace {
 
-constexpr const char* kStyle = R"css(
-body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em auto; max-width: 1400px; padding: 0 1em; color: #222; box-sizing: border-box; }
-h1 { font-size: 1.6em; } h2 { margin-top: 2em; border-bottom: 1px solid #ccc; } h3 { font-size: 1.05em; }
-dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1em; }
-dl.summary dt { font-weight: bold; } dl.summary dd { margin: 0; }
-nav.toc { columns: 2; font-size: 0.9em; } nav.toc ul { margin: 0.2em 0; } nav.toc > div { break-inside: avoid; }
-nav.toc a { overflow-wrap: anywhere; }
-@media (max-width: 700px) { nav.toc { columns: 1; } }
-.attention { background: #fff4e5; border-left: 4px solid #e69f00; padding: 0.5em 1em; }
-.scroll { overflow-x: auto; }
-table.data { border-collapse: collapse; font-size: 0.85em; margin: 0.5em 0; }
-table.data th, table.data td { border: 1px solid #ccc; padding: 0.2em 0.5em; white-space: nowrap; }
-table.data td.prose { white-space: normal; min-width: 18em; max-width: 36em; }
-table.data th { background: #f2f2f2; } table.data td.num { text-align: right; font-variant-numeric: tabular-nums; }
-table.data tr:nth-child(even) td { background: #fafafa; }
-.charts { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(620px, 100%), 1fr)); gap: 0 1.5em; }
-figure { margin: 1em 0; } figure svg { max-width: 100%; height: auto; }
-figcaption { font-size: 0.9em; color: #444; max-width: 720px; }
-p.note { font-size: 0.9em; color: #444; max-width: 900px; }
-div.verdict { border-left: 4px solid #999; padding: 0 1em; margin: 0.5em 0; }
-div.verdict-converged { border-color: #009e73; } div.verdict-pre-asymptotic { border-color: #e69f00; }
-div.verdict-unreliable, div.verdict-insufficient_grids { border-color: #d55e00; }
-div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em; }
-@page { size: A4; margin: 10mm; }
-@page landscape { size: A4 landscape; margin: 10mm; }
-@media print {
-  body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
-  .scroll { overflow: visible; }
-  table.data { font-size: 6.5pt; table-layout: auto; }
-  table.data.fit-landscape-small { font-size: 5pt; }
-  section:has(> .scroll > table.fit-landscape, > .scroll > table.fit-landscape-small),
-  .scroll:has(> table.fit-landscape, > table.fit-landscape-small) { page: landscape; }
-  table.data th, table.data td { white-space: normal; overflow-wrap: normal; word-break: normal; padding: 1px 2px; }
-  table.data td.num { white-space: nowrap; } table.data.fit-landscape-small td.num { white-space: normal; }
-  table.data td.prose { min-width: 10em; }
-  .charts { display: block; }
-  figure { break-inside: avoid; } h2, h3 { break-after: avoid; }
-  nav.toc { columns: 1; }
-}
-)css";
-
-// A table under its heading, in a <section> so that a table printed on a
-// landscape page takes its heading and notes along.
-std::string table_section(const NamedTable& t, const std::string& id, const std::string& empty_text) {
-  std::string out = "<section>\n<h2 id=\"" + id + "\">" + xml_escape(t.title) + "</h2>\n";
-  const std::string note = reading_note(t.file);
-  if (!note.empty()) out += "<p class=\"note\">" + xml_escape(note) + "</p>\n";
-  out += t.table.rows.empty() ? "<p>" + xml_escape(empty_text) + "</p>\n"
-                              : "<div class=\"scroll\">\n" + to_html(t.table) + "</div>\n";
-  out += "<p class=\"note\">CSV: " + xml_escape(t.file) + " (beside this file)</p>\n</section>\n";
-  return out;
-}
-
-std::string figure(const NamedChart& c) {
-  return "<figure id=\"" + xml_escape(slugify(c.file)) + "\">\n" + render_svg(c.chart) + "<figcaption>" +
-         xml_escape(c.caption) + " File: " + xml_escape(c.file) + "</figcaption>\n</figure>\n";
-}
 
 std::string verdict_section(const ReportContent& c) {
   std::string out = "<h2 id=\"verdicts\">Verdicts</h2>\n<p class=\"note\">" +
                     xml_escape(reading_note("verdicts")) + "</p>\n";
-  for (const auto& v : verdict_items(c)) {
-    out += "<div class=\"verdict verdict-" + xml_escape(v.verdict) + "\"><p><strong>" + xml_escape(v.label) +
-           "</strong>: <span class=\"word\">" + xml_escape(v.verdict) + "</span> — " + xml_escape(v.headline) +
-           "</p>\n<ul>\n";
-    for (const auto& r : v.reasons) out += "<li>" + xml_escape(r) + "</li>\n";
-    for (const auto& n : v.notes) out += "<li class=\"extra\">Note: " + xml_escape(n) + "</li>\n";
-    out += "</ul></div>\n";
-  }
+  for (const auto& v : verdict_items(c)) out += verdict_block(v);
+  return out;
+}
+
+// Summary layout (report_layout.h): the counts per factor level and the
+// worst series, each linked to its page.
+std::string verdict_summary(const ReportContent& c) {
+  std::string out = "<h2 id=\"verdicts\">Verdicts</h2>\n<p class=\"note\">" +
+                    xml_escape(reading_note("verdicts")) + "</p>\n";
+  out += "<div class=\"scroll\">\n" + to_html(c.verdict_count_table.table) + "</div>\n";
+  out += "<p class=\"note\">CSV: <a href=\"" + xml_escape(c.verdict_count_table.file) + "\">" +
+         xml_escape(c.verdict_count_table.file) + "</a></p>\n";
+  const auto worst = worst_series(c.series, kWorstSeries);
+  out += "<h3 id=\"worst-series\">Worst series</h3>\n<p class=\"note\">The " + std::to_string(worst.size()) +
+         " of " + std::to_string(c.series.size()) +
+         " series furthest from a converged answer: not converged first, then by the finest grid's RDE. Every "
+         "series' verdict is in the series table below and on its own page.</p>\n";
+  for (std::size_t i : worst) out += verdict_block(verdict_item(c.series[i]), series_page_file(c, i));
+  return out;
+}
+
+// The series table of the summary layout: every row, each series linked to
+// its page, with a filter by any words of its row (factor levels, verdict).
+std::string filtered_series_table(const ReportContent& c) {
+  std::string out = table_section(c.series_table, "series", "No series.");
+  const std::string filter =
+      "<p class=\"filter\"><label>Filter series: <input type=\"search\" id=\"series-filter\" "
+      "placeholder=\"words of the row, e.g. hkl 12 pre-asymptotic\"></label> <span id=\"series-shown\"></span></p>\n"
+      "<script>\n(function () {\n"
+      "  var input = document.getElementById('series-filter'), shown = document.getElementById('series-shown');\n"
+      "  var rows = document.querySelectorAll('#series-rows tbody tr');\n"
+      "  input.addEventListener('input', function () {\n"
+      "    var words = input.value.toLowerCase().split(/\\s+/).filter(Boolean), n = 0;\n"
+      "    rows.forEach(function (row) {\n"
+      "      var text = row.textContent.toLowerCase();\n"
+      "      var show = words.every(function (w) { return text.indexOf(w) !== -1; });\n"
+      "      row.style.display = show ? '' : 'none'; n += show ? 1 : 0;\n"
+      "    });\n"
+      "    shown.textContent = words.length ? n + ' of ' + rows.length + ' series' : '';\n"
+      "  });\n})();\n</script>\n";
+  // The filter above the table, the script after it (the rows exist when it runs).
+  const std::string scroll = "<div class=\"scroll\">";
+  const auto table_at = out.find(scroll);
+  if (table_at == std::string::npos) return out;  // no series: nothing to filter
+  out.replace(table_at, scroll.size(), filter.substr(0, filter.find("<script>")) +
+                                           "<div class=\"scroll\" id=\"series-rows\">");
+  const std::string div_end = "</div>\n";
+  const auto table_end = out.find(div_end, out.find("</table>", table_at));
+  out.insert(table_end + div_end.size(), filter.substr(filter.find("<script>")));
   return out;
 }
 
@@ -103,8 +93,8 @@ std::string contents(const ReportContent& c, const std::string& body) {
   std::string out = "<nav class=\"toc\"><div><strong>Contents</strong>\n" + toc_list_html(html_sections(body));
   out += "</div><div><strong>Files</strong>\n<ul>\n";
   for (const NamedTable* t :
-       {&c.series_table, &c.differences_table, &c.cost_table, &c.coverage_table, &c.gci_table, &c.failures_table,
-        &c.grids_table})
+       {&c.series_table, &c.verdict_count_table, &c.differences_table, &c.cost_table, &c.coverage_table,
+        &c.gci_table, &c.failures_table, &c.grids_table})
     out += "<li><a href=\"" + xml_escape(t->file) + "\">" + xml_escape(t->file) + "</a></li>\n";
   for (const auto& chart : c.charts) {
     out += "<li><a href=\"" + xml_escape(chart.file) + "\">" + xml_escape(chart.file) + "</a>";
@@ -120,24 +110,22 @@ std::string contents(const ReportContent& c, const std::string& body) {
 
 bool per_series(const NamedChart& c) { return c.file.rfind("fig1_", 0) == 0 || c.file.rfind("gci_", 0) == 0; }
 
-}  // namespace
-
-std::string render_html(const ReportContent& c) {
-  const std::string title = "Grid-convergence report: " + c.data.study_name;
-  std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-  out += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  out += "<title>" + xml_escape(title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
-  out += "<h1>" + xml_escape(title) + "</h1>\n<dl class=\"summary\">\n";
-  for (const auto& [key, value] : summary_items(c)) {
-    out += "<dt>" + xml_escape(key) + "</dt><dd>" + xml_escape(value) + "</dd>\n";
-  }
-  out += "</dl>\n";
+// The attention list, at most kShownWarnings lines in the summary layout.
+std::string attention(const ReportContent& c) {
   const auto warnings = series_warnings(c);
-  if (!warnings.empty()) {
-    out += "<div class=\"attention\"><strong>Attention:</strong><ul>\n";
-    for (const auto& w : warnings) out += "<li>" + xml_escape(w) + "</li>\n";
-    out += "</ul></div>\n";
-  }
+  if (warnings.empty()) return {};
+  const std::size_t shown = c.layout == ReportLayout::summary ? std::min(warnings.size(), kShownWarnings)
+                                                              : warnings.size();
+  std::string out = "<div class=\"attention\"><strong>Attention:</strong><ul>\n";
+  for (std::size_t i = 0; i < shown; ++i) out += "<li>" + xml_escape(warnings[i]) + "</li>\n";
+  if (shown < warnings.size())
+    out += "<li>… and " + std::to_string(warnings.size() - shown) +
+           " more: the series table's verdicts and notes (series.csv) and each series' page have them all.</li>\n";
+  out += "</ul></div>\n";
+  return out;
+}
+
+std::string full_page_body(const ReportContent& c) {
   std::string body = verdict_section(c);
   body += adaptive_section_html(c.data.adaptive_decisions);
   body += about_section(c);
@@ -160,6 +148,47 @@ std::string render_html(const ReportContent& c) {
   body += table_section(c.gci_table, "gci", "No series has three converged grids yet.");
   body += table_section(c.failures_table, "failures", "None: every finished grid converged.");
   body += table_section(c.grids_table, "grids", "No grids.");
+  return body;
+}
+
+// report_layout.h: too many series for one page; long tables cut to their
+// first rows, each series' charts and rows on its own page.
+std::string summary_body(const ReportContent& c) {
+  std::string body = verdict_summary(c);
+  body += adaptive_section_html(c.data.adaptive_decisions);
+  body += about_section(c);
+  body += ensembles_html(c);
+  body += filtered_series_table(c);
+  body += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.", kShownRows);
+  body += table_section(c.cost_table, "cost", "No series has an extrapolation yet.", kShownRows);
+  body += table_section(c.coverage_table, "coverage",
+                        "No series checked yet: a series needs all its grids and at least 6 of them converged.",
+                        kShownRows);
+  body += "<h2 id=\"charts\">Charts</h2>\n<p class=\"note\">With " + std::to_string(c.series.size()) +
+          " series the study charts aggregate (RDE: median and 10–90 % band per factor level) or sample "
+          "(speed-accuracy: the series drawn are named in each chart's note); every series' own charts are on "
+          "its page, linked from the series table.</p>\n<div class=\"charts\">\n";
+  for (const auto& chart : c.charts) body += figure(chart);
+  body += "</div>\n";
+  if (!c.alignment.empty()) body += table_section(c.alignment_table, "alignment", "", kShownRows);
+  body += table_section(c.gci_table, "gci", "No series has three converged grids yet.", kShownRows);
+  body += table_section(c.failures_table, "failures", "None: every finished grid converged.", kShownRows);
+  body += table_section(c.grids_table, "grids", "No grids.", kShownRows);
+  return body;
+}
+
+}  // namespace
+
+std::string render_html(const ReportContent& c) {
+  const std::string title = "Grid-convergence report: " + c.data.study_name;
+  std::string out = html_page_head(title);
+  out += "<h1>" + xml_escape(title) + "</h1>\n<dl class=\"summary\">\n";
+  for (const auto& [key, value] : summary_items(c)) {
+    out += "<dt>" + xml_escape(key) + "</dt><dd>" + xml_escape(value) + "</dd>\n";
+  }
+  out += "</dl>\n";
+  out += attention(c);
+  const std::string body = c.layout == ReportLayout::summary ? summary_body(c) : full_page_body(c);
   out += contents(c, body) + body;
   out += "</body>\n</html>\n";
   return out;

@@ -1,4 +1,6 @@
 // report.md: summary, tables, and links to the SVG charts beside it.
+#include <algorithm>
+#include <limits>
 #include <string>
 
 #include "report/adaptive_section.h"
@@ -6,18 +8,32 @@
 #include "report/report_content.h"
 #include "report/report_summary.h"
 #include "report/text_format.h"
+#include "report/verdict_counts.h"
 
 namespace gridfree {
 
 namespace {
 
-std::string table_section(const NamedTable& t, const std::string& empty_text) {
+// At most `max_rows` rows; a longer table says so and links its CSV.
+std::string table_section(const NamedTable& t, const std::string& empty_text,
+                          std::size_t max_rows = std::numeric_limits<std::size_t>::max()) {
   std::string out = "## " + t.title + "\n\n";
   const std::string note = reading_note(t.file);
   if (!note.empty()) out += note + "\n\n";
-  out += t.table.rows.empty() ? empty_text + "\n" : to_markdown(t.table);
-  out += "\nCSV: [" + t.file + "](" + t.file + ")\n\n";
+  const bool cut = t.rows() > std::min(max_rows, t.table.rows.size());
+  out += t.table.rows.empty() ? empty_text + "\n" : to_markdown(cut ? first_rows(t.table, max_rows) : t.table);
+  out += cut ? "\nThe first " + std::to_string(std::min(max_rows, t.table.rows.size())) + " of " +
+                   std::to_string(t.rows()) +
+                   " rows; every row in [" + t.file + "](" + t.file + ")\n\n"
+             : "\nCSV: [" + t.file + "](" + t.file + ")\n\n";
   return out;
+}
+
+void verdict_lines(std::string& out, const VerdictItem& v, const std::string& href = {}) {
+  out += "- **" + (href.empty() ? v.label : "[" + v.label + "](" + href + ")") + "**: **" + v.verdict + "** — " +
+         v.headline + "\n";
+  for (const auto& r : v.reasons) out += "  - " + r + "\n";
+  for (const auto& n : v.notes) out += "  - Note: " + n + "\n";
 }
 
 std::string chart_link(const NamedChart& c) {
@@ -27,20 +43,28 @@ std::string chart_link(const NamedChart& c) {
 }  // namespace
 
 std::string render_markdown(const ReportContent& c) {
+  const bool summary = c.layout == ReportLayout::summary;
+  const std::size_t cap = summary ? kShownRows : std::numeric_limits<std::size_t>::max();
   std::string out = "# Grid-convergence report: " + c.data.study_name + "\n\n";
   for (const auto& [key, value] : summary_items(c)) out += "- **" + key + ":** " + value + "\n";
   out += "\n";
   const auto warnings = series_warnings(c);
   if (!warnings.empty()) {
     out += "**Attention:**\n\n";
-    for (const auto& w : warnings) out += "- " + w + "\n";
+    const std::size_t shown = summary ? std::min(warnings.size(), kShownWarnings) : warnings.size();
+    for (std::size_t i = 0; i < shown; ++i) out += "- " + warnings[i] + "\n";
+    if (shown < warnings.size())
+      out += "- … and " + std::to_string(warnings.size() - shown) + " more (series.csv and each series' page)\n";
     out += "\n";
   }
   out += "## Verdicts\n\n" + reading_note("verdicts") + "\n\n";
-  for (const auto& v : verdict_items(c)) {
-    out += "- **" + v.label + "**: **" + v.verdict + "** — " + v.headline + "\n";
-    for (const auto& r : v.reasons) out += "  - " + r + "\n";
-    for (const auto& n : v.notes) out += "  - Note: " + n + "\n";
+  if (summary) {
+    out += to_markdown(c.verdict_count_table.table) + "\nCSV: [" + c.verdict_count_table.file + "](" +
+           c.verdict_count_table.file + ")\n\n### Worst series\n\n";
+    for (std::size_t i : worst_series(c.series, kWorstSeries)) verdict_lines(out, verdict_item(c.series[i]), series_page_file(c, i));
+  } else {
+    for (const auto& v : verdict_items(c)) verdict_lines(out, v);
+    out += "\nCounts per factor level: [" + c.verdict_count_table.file + "](" + c.verdict_count_table.file + ")\n";
   }
   out += "\n";
   out += adaptive_section_markdown(c.data.adaptive_decisions);
@@ -49,11 +73,11 @@ std::string render_markdown(const ReportContent& c) {
     for (const auto& p : a.paragraphs) out += p + "\n\n";
   }
   out += ensembles_markdown(c);
-  out += table_section(c.series_table, "No series.");
-  out += table_section(c.differences_table, "No two series differ in exactly one factor.");
-  out += table_section(c.cost_table, "No series has an extrapolation yet.");
+  out += table_section(c.series_table, "No series.", cap);
+  out += table_section(c.differences_table, "No two series differ in exactly one factor.", cap);
+  out += table_section(c.cost_table, "No series has an extrapolation yet.", cap);
   out += table_section(c.coverage_table,
-                       "No series checked yet: a series needs all its grids and at least 6 of them converged.");
+                       "No series checked yet: a series needs all its grids and at least 6 of them converged.", cap);
   out += "## Charts\n\n";
   if (!c.export_note.empty()) out += c.export_note + "\n\n";
   for (const auto& chart : c.charts) {
@@ -61,13 +85,18 @@ std::string render_markdown(const ReportContent& c) {
     out += "### " + chart.chart.title + "\n\n" + chart_link(chart);
   }
   out += "### Per series\n\n";
-  for (const auto& chart : c.charts) {
-    if (chart.file.rfind("fig1_", 0) == 0 || chart.file.rfind("gci_", 0) == 0) out += chart_link(chart);
+  if (summary) {
+    out += "Each series' charts and rows are on its page, series/<series>.html (linked from report.html's series "
+           "table), its chart files beside it in series/.\n\n";
+  } else {
+    for (const auto& chart : c.charts) {
+      if (chart.file.rfind("fig1_", 0) == 0 || chart.file.rfind("gci_", 0) == 0) out += chart_link(chart);
+    }
   }
-  if (!c.alignment.empty()) out += table_section(c.alignment_table, "");
-  out += table_section(c.gci_table, "No series has three converged grids yet.");
-  out += table_section(c.failures_table, "None: every finished grid converged.");
-  out += table_section(c.grids_table, "No grids.");
+  if (!c.alignment.empty()) out += table_section(c.alignment_table, "", cap);
+  out += table_section(c.gci_table, "No series has three converged grids yet.", cap);
+  out += table_section(c.failures_table, "None: every finished grid converged.", cap);
+  out += table_section(c.grids_table, "No grids.", cap);
   return out;
 }
 

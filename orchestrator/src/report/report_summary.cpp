@@ -39,30 +39,33 @@ std::vector<std::string> series_warnings(const ReportContent& c) {
   return out;
 }
 
+VerdictItem verdict_item(const SeriesSummary& s) {
+  VerdictItem item{s.label, s.verdict, {}, s.verdict_reasons, {}};
+  if (const auto f0 = s.f0()) {
+    const auto& grids = s.extrapolation->grids;
+    const std::optional<double> u = grids.empty() ? std::nullopt : grids.front().u;
+    // Each value with its own interval: f0 ± U₀, f₁ ± U₁ (U₁ is about
+    // f₁, never printed with f0; docs/EXTRAPOLATION.md "U₀").
+    const std::optional<double> u0 = s.extrapolation->u0;
+    item.headline = "f0 = " + (u0 ? format_with_uncertainty(*f0, u0) + " (U₀)" : format_to_uncertainty_digits(*f0, u));
+    if (!grids.empty())
+      item.headline += "; finest grid Δ* = " + format_g(grids.front().h, 4) + ": f₁ = " +
+                       format_with_uncertainty(grids.front().f, u) +
+                       (u ? " (U₁, RDE " + format_percent(grids.front().rde) + ")" : "");
+  } else {
+    item.headline = "no extrapolated value";
+  }
+  const std::string note = s.note();
+  if (!note.empty()) item.notes.push_back(note);
+  if (s.extrapolation)
+    for (const auto& n : s.extrapolation->notes) item.notes.push_back(n);
+  return item;
+}
+
 std::vector<VerdictItem> verdict_items(const ReportContent& c) {
   std::vector<VerdictItem> out;
-  for (const auto& s : c.series) {
-    VerdictItem item{s.label, s.verdict, {}, s.verdict_reasons, {}};
-    if (const auto f0 = s.f0()) {
-      const auto& grids = s.extrapolation->grids;
-      const std::optional<double> u = grids.empty() ? std::nullopt : grids.front().u;
-      // Each value with its own interval: f0 ± U₀, f₁ ± U₁ (U₁ is about
-      // f₁, never printed with f0; docs/EXTRAPOLATION.md "U₀").
-      const std::optional<double> u0 = s.extrapolation->u0;
-      item.headline = "f0 = " + (u0 ? format_with_uncertainty(*f0, u0) + " (U₀)" : format_to_uncertainty_digits(*f0, u));
-      if (!grids.empty())
-        item.headline += "; finest grid Δ* = " + format_g(grids.front().h, 4) + ": f₁ = " +
-                         format_with_uncertainty(grids.front().f, u) +
-                         (u ? " (U₁, RDE " + format_percent(grids.front().rde) + ")" : "");
-    } else {
-      item.headline = "no extrapolated value";
-    }
-    const std::string note = s.note();
-    if (!note.empty()) item.notes.push_back(note);
-    if (s.extrapolation)
-      for (const auto& n : s.extrapolation->notes) item.notes.push_back(n);
-    out.push_back(std::move(item));
-  }
+  out.reserve(c.series.size());
+  for (const auto& s : c.series) out.push_back(verdict_item(s));
   return out;
 }
 
@@ -95,7 +98,8 @@ std::string reading_note(const std::string& section) {
            "that factor (model form: drag law, filter width, particle configuration) on the grid-free "
            "answer. It is beyond the uncertainty when |f0a − f0b| > √(U_a² + U_b²), U of each series' finest "
            "grid (shown relative to the mean f0). Differences between series that are not both converged "
-           "are marked ⚠: their f0 may move when grids are added.";
+           "are marked ⚠: their f0 may move when grids are added. A factor of more than 12 levels (the "
+           "instances of a large ensemble) pairs no series: the ensemble section gives their spread.";
   }
   if (section == "coverage.csv") {
     return "Does the uncertainty cover the answer? For every series with all its grids and at least 6 converged, "

@@ -24,7 +24,8 @@ struct VerdictItem {
   std::string label, verdict, headline;
   std::vector<std::string> reasons, notes;
 };
-std::vector<VerdictItem> verdict_items(const ReportContent& content);
+VerdictItem verdict_item(const SeriesSummary& series);
+std::vector<VerdictItem> verdict_items(const ReportContent& content);  // every series, in order
 
 // One short paragraph per section on how to read it (keyed by CSV/section name).
 std::string reading_note(const std::string& section);

@@ -101,6 +101,7 @@ std::vector<SeriesSummary> summarize_series(const StudyReportData& data, const E
     }
     if (s.incomplete) s.verdict_reasons.insert(s.verdict_reasons.begin(), "provisional: grids are still pending");
     s.coverage = series_coverage(s, extrapolate);
+    s.series.stored_coverage.reset();  // now in s.coverage: one copy per series
     out.push_back(std::move(s));
   }
   return out;

@@ -409,7 +409,7 @@ std::string render_svg(const Chart& given) {
 }
 
 std::string render_svg_file(const Chart& chart) {
-  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + render_svg(chart);
+  return kSvgDeclaration + render_svg(chart);
 }
 
 }  // namespace gridfree

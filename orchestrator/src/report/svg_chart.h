@@ -88,6 +88,8 @@ std::string render_svg(const Chart& chart);
 // Width in pixels of the legend column for these entries (markup allowed).
 double legend_width(const std::vector<std::string>& labels);
 
+// The XML declaration of a standalone .svg file.
+inline constexpr const char* kSvgDeclaration = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
 // render_svg with an XML declaration, for a standalone .svg file.
 std::string render_svg_file(const Chart& chart);
 

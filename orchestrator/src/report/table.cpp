@@ -1,6 +1,8 @@
 // CSV, Markdown and HTML renderings of a Table (see table.h).
 #include "report/table.h"
 
+#include <algorithm>
+
 #include "report/table_print_fit.h"
 #include "report/text_format.h"
 
@@ -24,13 +26,13 @@ std::string title_of(const Column& c) { return c.title.empty() ? c.name : c.titl
 
 }  // namespace
 
-std::string to_csv(const Table& table) {
+std::string to_csv(const Table& table, bool with_header) {
   std::string out;
-  for (std::size_t i = 0; i < table.columns.size(); ++i) {
+  for (std::size_t i = 0; with_header && i < table.columns.size(); ++i) {
     if (i) out += ',';
     out += csv_field(table.columns[i].name);
   }
-  out += "\n";
+  if (with_header) out += "\n";
   for (const auto& row : table.rows) {
     for (std::size_t i = 0; i < table.columns.size(); ++i) {
       if (i) out += ',';
@@ -64,6 +66,29 @@ std::string to_markdown(const Table& table) {
   return out;
 }
 
+Table first_rows(const Table& table, std::size_t n) {
+  Table out{table.columns, {}};
+  out.rows.assign(table.rows.begin(), table.rows.begin() + static_cast<std::ptrdiff_t>(std::min(n, table.rows.size())));
+  return out;
+}
+
+std::map<std::string, std::vector<std::size_t>> rows_by(const Table& table, const std::string& column) {
+  std::map<std::string, std::vector<std::size_t>> out;
+  std::size_t k = 0;
+  while (k < table.columns.size() && table.columns[k].name != column) ++k;
+  if (k == table.columns.size()) return out;
+  for (std::size_t i = 0; i < table.rows.size(); ++i)
+    if (k < table.rows[i].size()) out[table.rows[i][k].exact].push_back(i);
+  return out;
+}
+
+Table rows_at(const Table& table, const std::vector<std::size_t>& rows) {
+  Table out{table.columns, {}};
+  out.rows.reserve(rows.size());
+  for (std::size_t i : rows) out.rows.push_back(table.rows.at(i));
+  return out;
+}
+
 std::string to_html(const Table& table, const std::string& css_class) {
   // The print layout class (table_print_fit.h) rides along with the caller's.
   std::string out = "<table class=\"" + xml_escape(css_class) + " " + print_fit_class(table) + "\">\n<thead><tr>";
@@ -77,7 +102,10 @@ std::string to_html(const Table& table, const std::string& css_class) {
       const Column& c = table.columns[i];
       if (c.csv_only) continue;
       out += c.numeric ? "<td class=\"num\">" : c.prose ? "<td class=\"prose\">" : "<td>";
-      out += xml_escape(i < row.size() ? row[i].shown : std::string()) + "</td>";
+      const std::string shown = xml_escape(i < row.size() ? row[i].shown : std::string());
+      out += (i < row.size() && !row[i].href.empty() ? "<a href=\"" + xml_escape(row[i].href) + "\">" + shown + "</a>"
+                                                    : shown) +
+             "</td>";
     }
     out += "</tr>\n";
   }

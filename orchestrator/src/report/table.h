@@ -2,6 +2,8 @@
 // column), Markdown and HTML (rounded values, display columns only).
 #pragma once
 
+#include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +13,7 @@ namespace gridfree {
 struct Cell {
   std::string exact;   // CSV text
   std::string shown;   // Markdown/HTML text
+  std::string href = {};  // HTML: the shown text links here (empty: no link)
 };
 
 struct Column {
@@ -32,7 +35,16 @@ Cell number_cell(const std::optional<double>& value, int shown_digits = 6);
 Cell percent_cell(const std::optional<double>& fraction, int shown_digits = 3);
 Cell integer_cell(long long value);
 
-std::string to_csv(const Table& table);
+// `with_header` false: the rows alone (a table written in parts).
+std::string to_csv(const Table& table, bool with_header = true);
+
+// The same columns with the first n rows.
+Table first_rows(const Table& table, std::size_t n);
+// Row indices grouped by the exact (CSV) text of column `column`; empty
+// when the table has no such column.
+std::map<std::string, std::vector<std::size_t>> rows_by(const Table& table, const std::string& column);
+// The same columns with the given rows, in the given order.
+Table rows_at(const Table& table, const std::vector<std::size_t>& rows);
 std::string to_markdown(const Table& table);
 // <table class="... fit-..."> with <thead>/<tbody>; cells' classes carry
 // alignment, the fit-... class the table's print layout (table_print_fit.h).

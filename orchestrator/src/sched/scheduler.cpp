@@ -160,14 +160,14 @@ int recover_stale_jobs(Store& store) {
   return n;
 }
 
-bool refresh_report(Store& store, long long study_id, const SchedulerOptions& o) {
+bool refresh_report(Store& store, long long study_id, const SchedulerOptions& o, ExtrapolationMemo* memo) {
   if (!o.report_dir || o.stop_requested()) return true;  // stopping: the next run writes it
   const auto st = store.statuses(study_id);
   if (st.empty()) return true;
   const auto dir = o.report_dir(st.front().name);
   if (dir.empty()) return true;
   try {
-    write_report(store, study_id, dir, o.stop_requested);
+    write_report(store, study_id, dir, o.stop_requested, memo);
     return true;
   } catch (const ReportInterrupted&) {
     spdlog::info("report for study '{}' interrupted by the stop; the next run or `gridfree report` writes it",
@@ -196,10 +196,11 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
   // Reports of studies whose series finished, paced (sched/report_pacer.h):
   // all pending ones, or only those whose pause is over.
   ReportPacer pacer;
+  std::map<long long, ExtrapolationMemo> memos;  // per study, between its report writes
   auto write_reports = [&](bool all_pending) {
     for (long long id : pacer.pending(all_pending ? std::nullopt : std::optional<double>(seconds_now()))) {
       const double started = seconds_now();
-      if (!refresh_report(store, id, o)) ++sum.reports_failed;
+      if (!refresh_report(store, id, o, &memos[id])) ++sum.reports_failed;
       else sum.reports_current = true;
       pacer.written(id, started, seconds_now());
     }

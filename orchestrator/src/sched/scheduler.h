@@ -19,6 +19,7 @@
 #include <string>
 
 #include "exec/executor.h"
+#include "report/extrapolation_memo.h"
 #include "sched/progress.h"
 #include "store/store.h"
 
@@ -72,7 +73,9 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
 // (the results are safe in the store either way; `run` and `daemon` then
 // exit non-zero). Once a stop is requested (options.stop_requested, also
 // polled while the report is written: report/report_stop.h) the report is
-// left for the next run and true returned.
-bool refresh_report(Store& store, long long study_id, const SchedulerOptions& options);
+// left for the next run and true returned. `memo`: the study's
+// extrapolations of earlier writes (report/extrapolation_memo.h), if kept.
+bool refresh_report(Store& store, long long study_id, const SchedulerOptions& options,
+                    ExtrapolationMemo* memo = nullptr);
 
 }  // namespace gridfree

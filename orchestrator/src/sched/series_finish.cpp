@@ -286,14 +286,16 @@ StudyReportData build_report_data(Store& store, long long study_id) {
 }
 
 std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir,
-                                   const StopRequested& stop) {
+                                   const StopRequested& stop, ExtrapolationMemo* memo) {
   const StudyReportData data = build_report_data(store, study_id);
-  if (!adaptive_grids_of(store.study_definition(study_id))) return write_study_report(data, out_dir, stop).html;
+  Extrapolator extrapolate = library_extrapolator({data.extrapolation_method, data.p_low, data.p_high});
   // Adaptive series: the report fits what the decisions and the store used,
   // the window of the finest grids (sched/adaptive_window.h).
-  const Extrapolator windowed =
-      windowed_extrapolator(library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}));
-  return write_study_report(data, out_dir, windowed, stop).html;
+  if (adaptive_grids_of(store.study_definition(study_id))) extrapolate = windowed_extrapolator(std::move(extrapolate));
+  if (memo) extrapolate = memo->wrap(std::move(extrapolate));
+  auto html = write_study_report(data, out_dir, extrapolate, stop).html;
+  if (memo) memo->end_write();
+  return html;
 }
 
 }  // namespace gridfree

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/extrapolator.h"
+#include "report/extrapolation_memo.h"
 #include "report/report_data.h"
 #include "report/report_stop.h"
 #include "store/store.h"
@@ -48,8 +49,10 @@ int finish_series_of_job(Store& store, long long study_id, long long job_id, boo
 StudyReportData build_report_data(Store& store, long long study_id);
 
 // build_report_data + write_study_report into out_dir; returns the HTML path.
-// `stop`: see report/report_stop.h (throws ReportInterrupted).
+// `stop`: see report/report_stop.h (throws ReportInterrupted). `memo`: the
+// study's extrapolations of earlier writes (report/extrapolation_memo.h),
+// kept by a caller that writes the report again and again.
 std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir,
-                                   const StopRequested& stop = {});
+                                   const StopRequested& stop = {}, ExtrapolationMemo* memo = nullptr);
 
 }  // namespace gridfree

@@ -89,14 +89,14 @@ class ReportWriter : public ::testing::Test {
 
 TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
   for (const char* name : {"report.md", "report.html", "grids.csv", "series.csv", "differences.csv", "gci.csv",
-                           "cost.csv", "failures.csv", "coverage.csv", "fig2_rde.svg", "speed_accuracy.svg", "speed_accuracy_work.svg",
+                           "cost.csv", "failures.csv", "coverage.csv", "verdict_counts.csv", "fig2_rde.svg", "speed_accuracy.svg", "speed_accuracy_work.svg",
                            "fig1_01_PC1_superbee_fwhm6_bvk.svg", "gci_01_PC1_superbee_fwhm6_bvk.svg",
                            "fig1_02_PC1_superbee_fwhm6_hkl.svg", "fig1_03_PC2_superbee_fwhm6_bvk.svg",
                            "gci_03_PC2_superbee_fwhm6_bvk.svg"}) {
     EXPECT_TRUE(fs::is_regular_file(dir_ / name)) << name;
   }
   EXPECT_EQ(files_.html, dir_ / "report.html");
-  EXPECT_EQ(files_.csv.size(), 7u);
+  EXPECT_EQ(files_.csv.size(), 8u);
   // PDF and PNG beside every SVG when rsvg-convert is installed (install-deps.sh).
   if (!find_svg_converter().empty()) {
     for (const auto& svg : files_.svg) {
