@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "exec/executor.h"
 #include "sched/series_finish.h"
+#include "sched/stability_status.h"
 #include "sched/stop_signal.h"
 #include "sched/study_status.h"
 #include "store/orphans.h"
@@ -87,6 +88,7 @@ void add_status_command(CLI::App& app, int& exit_code) {
         out[0]["slurm"] = q;
       }
       if (detail) out[0]["detail"] = *detail;
+      if (id && !out.empty()) out[0]["stability"] = stability_status(*store, *id);  // outcome per grid
       std::cout << out.dump(2) << '\n';
     } else {
       std::printf("%-28s %-10s %6s %6s %7s %8s %6s %6s %9s %9s %8s\n", "study", "status", "jobs", "queued",

@@ -18,6 +18,7 @@
 #include "report/report_ensembles.h"
 #include "report/report_tables.h"
 #include "report/series_page.h"
+#include "report/stability_section.h"
 
 namespace gridfree {
 
@@ -135,6 +136,7 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
     files.csv.push_back(out_dir / content.alignment_table.file);
     write_file_atomically(files.csv.back(), to_csv(content.alignment_table.table));
   }
+  write_stability_files(content, out_dir, files);  // stability.csv, stability_series.csv
   write_ensemble_files(content.ensembles, out_dir, files);  // ensembles.csv, budget.csv, budget_*.svg
   const auto converter = data.export_charts ? find_svg_converter() : std::filesystem::path();
   if (data.export_charts && converter.empty()) {

@@ -20,6 +20,7 @@ struct GridPoint {
   std::string status;                // result status: converged | not_converged | diverged | invalid | failed | (job) queued | running
   std::optional<double> dp_star;     // f, when the job produced one
   std::string reason;                // why not converged / failed
+  std::string worker_outcome;        // the result's `outcome` word, '' for older results (report/stability_map.h)
   double wall_s = 0, cpu_s = 0, peak_rss_mb = 0;
   int iterations = 0;
 };

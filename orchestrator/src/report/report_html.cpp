@@ -14,6 +14,7 @@
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/stability_section.h"
 #include "report/text_format.h"
 #include "report/verdict_counts.h"
 
@@ -96,6 +97,8 @@ std::string contents(const ReportContent& c, const std::string& body) {
        {&c.series_table, &c.verdict_count_table, &c.differences_table, &c.cost_table, &c.coverage_table,
         &c.gci_table, &c.failures_table, &c.grids_table})
     out += "<li><a href=\"" + xml_escape(t->file) + "\">" + xml_escape(t->file) + "</a></li>\n";
+  for (const char* f : {kStabilityCsv, kStabilitySeriesCsv, kStabilitySvg})
+    out += "<li><a href=\"" + std::string(f) + "\">" + f + "</a></li>\n";
   for (const auto& chart : c.charts) {
     out += "<li><a href=\"" + xml_escape(chart.file) + "\">" + xml_escape(chart.file) + "</a>";
     for (const auto& extra : chart.converted)
@@ -146,6 +149,7 @@ std::string full_page_body(const ReportContent& c) {
   body += "</div>\n";
   if (!c.alignment.empty()) body += table_section(c.alignment_table, "alignment", "");
   body += table_section(c.gci_table, "gci", "No series has three converged grids yet.");
+  body += stability_section_html(c);  // "Where methods fail" (stability_section.h)
   body += table_section(c.failures_table, "failures", "None: every finished grid converged.");
   body += table_section(c.grids_table, "grids", "No grids.");
   return body;
@@ -172,6 +176,7 @@ std::string summary_body(const ReportContent& c) {
   body += "</div>\n";
   if (!c.alignment.empty()) body += table_section(c.alignment_table, "alignment", "", kShownRows);
   body += table_section(c.gci_table, "gci", "No series has three converged grids yet.", kShownRows);
+  body += stability_section_html(c);  // "Where methods fail" (stability_section.h): failures first, rows capped
   body += table_section(c.failures_table, "failures", "None: every finished grid converged.", kShownRows);
   body += table_section(c.grids_table, "grids", "No grids.", kShownRows);
   return body;

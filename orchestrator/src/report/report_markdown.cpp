@@ -7,6 +7,7 @@
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/stability_section.h"
 #include "report/text_format.h"
 #include "report/verdict_counts.h"
 
@@ -95,6 +96,7 @@ std::string render_markdown(const ReportContent& c) {
   }
   if (!c.alignment.empty()) out += table_section(c.alignment_table, "", cap);
   out += table_section(c.gci_table, "No series has three converged grids yet.", cap);
+  out += stability_section_markdown(c);  // "Where methods fail" (stability_section.h)
   out += table_section(c.failures_table, "None: every finished grid converged.", cap);
   out += table_section(c.grids_table, "No grids.", cap);
   return out;

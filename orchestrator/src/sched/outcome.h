@@ -1,7 +1,7 @@
 // What a finished job means for the store (failure classification):
 //
 //   exit 0 + valid converged result      → final: converged
-//   exit 3 + result file                 → final: its status (not_converged | diverged | failed) + reason
+//   exit 3 + result file                 → final: its status (not_converged | diverged | invalid | failed) + reason
 //   exit 2                               → final: invalid (not retried: the input is wrong)
 //   exit 1, other codes, a signal, a timeout,
 //   a missing or garbage result file     → retryable (one more attempt, then failed)

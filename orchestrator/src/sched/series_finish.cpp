@@ -276,6 +276,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
       g.cpu_s = p.cpu_s;
       g.peak_rss_mb = p.peak_rss_mb;
       g.iterations = p.iterations;
+      g.worker_outcome = p.worker_outcome;
       sd.grids.push_back(std::move(g));
     }
     d.series.push_back(std::move(sd));

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "store/schema_ensembles.h"
+#include "store/stability_view.h"
 
 namespace gridfree {
 namespace {
@@ -346,6 +347,8 @@ void migrate(Database& db, int target) {
     auto fk = db.prepare("PRAGMA foreign_key_check");
     if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);
   }
+  // Not a numbered step (store/stability_view.h): created if missing, on the full schema only.
+  if (std::max(v, target) >= 10) ensure_stability_view(db);
   db.exec("PRAGMA user_version = " + std::to_string(std::max(v, target)));
   tx.commit();
 }

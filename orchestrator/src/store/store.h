@@ -79,6 +79,7 @@ struct SeriesPoint {             // one job of a series, with its result if any
   std::optional<double> dp_star;
   int iterations = 0;
   double wall_s = 0, cpu_s = 0, peak_rss_mb = 0;
+  std::string worker_outcome;    // the result's `outcome` (stalled | iteration_cap ...), '' before it existed
 };
 
 struct ExtrapolationRow {

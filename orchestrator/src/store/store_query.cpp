@@ -70,7 +70,8 @@ std::vector<SeriesPoint> Store::series_points(long long series_id) {
   auto st = db_.prepare(
       "SELECT j.id, j.job_hash, j.status, COALESCE(r.status, ''), COALESCE(r.reason, j.error, ''), "
       "COALESCE(r.delta_star, j.delta_star), j.nx, j.ny, j.nz, r.dp_star, COALESCE(r.iterations, 0), "
-      "COALESCE(r.wall_s, 0), COALESCE(r.cpu_s, 0), COALESCE(r.peak_rss_mb, 0) "
+      "COALESCE(r.wall_s, 0), COALESCE(r.cpu_s, 0), COALESCE(r.peak_rss_mb, 0), "
+      "COALESCE(CASE WHEN json_valid(r.result_json) THEN json_extract(r.result_json, '$.outcome') END, '') "
       "FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id LEFT JOIN results r ON r.job_id = j.id "
       "WHERE sj.series_id = ? AND sj.alignment_only = 0 ORDER BY sj.grid_index");
   st.bind_all(series_id);
@@ -88,6 +89,7 @@ std::vector<SeriesPoint> Store::series_points(long long series_id) {
     p.wall_s = st.as_double(11);
     p.cpu_s = st.as_double(12);
     p.peak_rss_mb = st.as_double(13);
+    p.worker_outcome = st.as_text(14);
     out.push_back(std::move(p));
   }
   return out;

@@ -115,7 +115,9 @@ TEST(SolveCli, CentroidDepositionFailsBelowDeltaStarOne) {
   const Outcome r = worker_solve((dir / "job.json").string() + " -o " + (dir / "result.json").string() + " -q", dir);
   ASSERT_EQ(r.exit_code, 3) << r.output;
   const nlohmann::json res = load_json(dir / "result.json");
-  EXPECT_EQ(res["status"], "failed");
+  EXPECT_EQ(res["status"], "invalid");  // no gas in a cell: no solution exists, nothing was iterated
+  EXPECT_EQ(res["outcome"], "invalid");
+  EXPECT_EQ(res["iterations"], 0);
   const std::string reason = res["reason"];
   EXPECT_NE(reason.find("solids fraction"), std::string::npos) << reason;
   EXPECT_NE(reason.find("diffusion deposition"), std::string::npos) << reason;

@@ -77,6 +77,26 @@ TEST(Result, DivergedRunWritesNullsForNonFiniteNumbers) {
   EXPECT_EQ(back.status, SolveStatus::kDiverged);
 }
 
+// The outcome word splits not_converged by what stopped the iterations
+// (docs/INTERFACE.md §2): the stall window or the iteration cap.
+TEST(Result, OutcomeSplitsNotConvergedIntoStalledAndIterationCap) {
+  JobResult r = example();
+  EXPECT_EQ(to_json(r)["outcome"], "converged");
+  r.status = SolveStatus::kNotConverged;
+  r.reason = "not converged after 20000 iterations";
+  EXPECT_EQ(to_json(r)["outcome"], "iteration_cap");
+  r.stalled = true;
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j["outcome"], "stalled");
+  EXPECT_TRUE(validate_against_schema(j, "result.schema").empty()) << format_problems(validate_against_schema(j, "result.schema"));
+  EXPECT_TRUE(result_from_json(j).stalled);
+  for (const auto s : {SolveStatus::kDiverged, SolveStatus::kInvalid, SolveStatus::kFailed}) {
+    r.status = s;
+    r.dp_star.reset();
+    EXPECT_EQ(to_json(r)["outcome"], solve_status_name(s));
+  }
+}
+
 TEST(Result, StatusNames) {
   for (SolveStatus s : {SolveStatus::kConverged, SolveStatus::kNotConverged, SolveStatus::kDiverged,
                         SolveStatus::kInvalid, SolveStatus::kFailed})

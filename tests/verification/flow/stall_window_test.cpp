@@ -53,6 +53,7 @@ TEST(StallWindow, EndsALimitCycleAsNotConvergedAndSaysSo) {
   EXPECT_GT(stopped.iterations, 200);
   EXPECT_LT(stopped.iterations, 1000);
   EXPECT_NE(stopped.reason.find("stalling for 200 iterations"), std::string::npos) << stopped.reason;
+  EXPECT_EQ(result_outcome_name(stopped), "stalled");
   EXPECT_GT(std::max(stopped.residual_continuity, stopped.residual_momentum), 1e-5);
   ASSERT_TRUE(stopped.dp_star.has_value());
 
@@ -62,6 +63,7 @@ TEST(StallWindow, EndsALimitCycleAsNotConvergedAndSaysSo) {
   const JobResult capped = solve_document(doc);
   EXPECT_EQ(capped.status, SolveStatus::kNotConverged);
   EXPECT_EQ(capped.iterations, stopped.iterations + 200);
+  EXPECT_EQ(result_outcome_name(capped), "iteration_cap");
   EXPECT_NE(capped.reason.find("iterations"), std::string::npos);
 }
 

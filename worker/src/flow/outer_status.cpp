@@ -48,6 +48,10 @@ bool outer_diverged(const IterationReport& r, double blowup, double first_contin
   return bad || r.continuity > blowup * first_continuity || r.momentum > blowup * first_momentum;
 }
 
+bool stall_is_divergence(const IterationReport& r) {
+  return r.qoi.has_value() && !(r.qoi_change < kStallUnsettledQoiChange);
+}
+
 std::string residuals_text(double continuity, double momentum) {
   return "continuity residual " + residual_text(continuity) + ", momentum residual " + residual_text(momentum);
 }

@@ -31,6 +31,19 @@ std::string residual_text(double x);
 // above blowup × its reference (docs/SOLVER.md, "Steady criterion").
 bool outer_diverged(const IterationReport& r, double blowup, double first_continuity, double first_momentum);
 
+// A stall (numerics.stall_window) with the quantity of interest still
+// moving by this fraction or more over its window is no limit cycle near a
+// steady state but an iteration wandering far from one: diverged, without
+// a dp* (docs/SOLVER.md "Stalled outer iterations"). Measured on
+// studies/stability.json: limit cycles move dp* by at most 3.1e-4 a window,
+// the wandering runs (central at Re_p 300) by 0.10 to 1, with dp* up to
+// 1e21 times the converged value.
+inline constexpr double kStallUnsettledQoiChange = 1e-2;
+
+// True when a stall ends an iteration whose quantity of interest has not
+// settled: see kStallUnsettledQoiChange.
+bool stall_is_divergence(const IterationReport& r);
+
 // "continuity residual …, momentum residual …"
 std::string residuals_text(double continuity, double momentum);
 

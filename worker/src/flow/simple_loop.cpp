@@ -96,7 +96,18 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
       return out;
     }
     if (stall && stall->stalled(std::max(report.continuity, report.momentum))) {
+      if (stall_is_divergence(report)) {  // no limit cycle: the quantity of interest itself wanders
+        out.status = SolveStatus::kDiverged;
+        out.reason = "diverged: no progress in " + std::to_string(settings.stall_window) + " iterations at iteration " +
+                     std::to_string(it) + " with the quantity of interest still changing by " +
+                     residual_text(report.qoi_change) + " (a stall needs less than " +
+                     residual_text(kStallUnsettledQoiChange) + "): " +
+                     residuals_text(report.continuity, report.momentum);
+        out.qoi.reset();
+        return out;
+      }
       out.status = SolveStatus::kNotConverged;
+      out.stalled = true;
       out.reason = not_converged_reason("stalling for " + std::to_string(settings.stall_window) +
                                             " iterations at iteration " + std::to_string(it),
                                         out, tol);

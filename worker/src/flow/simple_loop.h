@@ -96,6 +96,7 @@ struct SimpleOutcome {
   PhaseSeconds seconds;
   bool linear_failures = false;  // some linear solve missed its tolerance
   bool stopped = false;          // LoopControl::stop_requested ended it early
+  bool stalled = false;          // not_converged by the stall window, not by the iteration cap
   int newton_steps = 0;          // Newton–Krylov only: steps taken
   int newton_fallbacks = 0;      // of which plain SIMPLEC steps (line search failed)
 };

@@ -201,7 +201,7 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
     r.extra["timing"]["deposition_s"] = t_deposit;
   };
   if (auto why = overfull_cell_reason(g, sf, d, num.deposition.kind == DepositionKind::kCentroid && !uniform)) {
-    result.status = SolveStatus::kFailed;
+    result.status = SolveStatus::kInvalid;  // no gas in a cell: the job has no solution to iterate towards
     result.reason = *why;
     finish(result);
     return result;
@@ -282,6 +282,7 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
   // 5. Result.
   result.status = out.status;
   result.reason = out.reason;
+  result.stalled = out.stalled;
   result.iterations = out.iterations;
   result.residual_continuity = out.continuity;
   result.residual_momentum = out.momentum;

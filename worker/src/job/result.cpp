@@ -41,6 +41,11 @@ std::optional<SolveStatus> solve_status_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view result_outcome_name(const JobResult& r) {
+  if (r.status == SolveStatus::kNotConverged) return r.stalled ? "stalled" : "iteration_cap";
+  return solve_status_name(r.status);
+}
+
 nlohmann::json to_json(const JobResult& r) {
   // A converged result always carries its dp*: the worker refuses cases
   // without inflow (job/case_plausibility.h), so this is a program error.
@@ -50,6 +55,7 @@ nlohmann::json to_json(const JobResult& r) {
   j["schema"] = "gridfree/result/1";
   j["job_hash"] = r.job_hash;
   j["status"] = solve_status_name(r.status);
+  j["outcome"] = result_outcome_name(r);
   if (!r.reason.empty()) j["reason"] = r.reason;
   j["srq"] = {{"dp_star", r.dp_star ? number_or_null(*r.dp_star) : nlohmann::json(nullptr)}};
   j["grid"] = {{"cells", r.cells}, {"delta_star", std::isfinite(r.delta_star) ? r.delta_star : 0.0}};
@@ -74,6 +80,7 @@ JobResult result_from_json(const nlohmann::json& j) {
   r.job_hash = j.at("job_hash").get<std::string>();
   r.status = solve_status_from_name(j.at("status").get<std::string>()).value_or(SolveStatus::kFailed);
   r.reason = j.value("reason", "");
+  r.stalled = j.value("outcome", "") == "stalled";
   if (j.contains("srq") && j.at("srq").contains("dp_star") && j.at("srq").at("dp_star").is_number())
     r.dp_star = j.at("srq").at("dp_star").get<double>();
   if (j.contains("grid") && j.at("grid").contains("cells"))

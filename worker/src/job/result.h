@@ -19,6 +19,7 @@ struct JobResult {
   std::string job_hash;
   SolveStatus status = SolveStatus::kFailed;
   std::string reason;                       // empty when converged
+  bool stalled = false;                     // not_converged: by the stall window (else the iteration cap)
   std::optional<double> dp_star;            // absent unless converged / a number exists
   std::array<int, 3> cells{};
   double delta_star = 0;
@@ -35,6 +36,10 @@ struct JobResult {
   nlohmann::json extra = nlohmann::json::object();  // more diagnostics (filter stats, timings per phase)
   std::string version;
 };
+
+// The result's outcome word (docs/INTERFACE.md §2 "outcome"): the status,
+// with not_converged split into stalled and iteration_cap.
+std::string_view result_outcome_name(const JobResult& r);
 
 // The result document; non-finite numbers are written as null.
 nlohmann::json to_json(const JobResult& r);
