@@ -170,6 +170,9 @@ TEST(StudyLifecycle, StudyTimeoutKillsAHangingJob) {
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT status FROM jobs"), "failed");
   EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT attempts FROM jobs"), "2");  // killed, retried once, killed again
+  // The stability map's word for it (store/stability_view.h, report/stability_map.h).
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT outcome FROM v_stability"), "timed_out")
+      << sqlite_query(dir / "g.sqlite", "SELECT reason FROM v_stability");
 }
 
 TEST(StudyLifecycle, PlanListsGridsAndWarnsAboutCloseNeighbours) {
