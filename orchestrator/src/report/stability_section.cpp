@@ -157,8 +157,8 @@ std::string stability_svg(const StabilityMap& m) {
     const StabilityRow& row = m.rows[std::size_t(r)];
     const int y = kTop + r * kCellH;
     std::string label = row.label.size() > 48 ? row.label.substr(0, 45) + "..." : row.label;
-    out += "<text x=\"4\" y=\"" + std::to_string(y + 14) + "\"><title>" + xml_escape(row.label + ": " + row.line) +
-           "</title>" + xml_escape(label) + "</text>\n";
+    out += "<g><title>" + xml_escape(row.label + ": " + row.line) + "</title><text x=\"4\" y=\"" +
+           std::to_string(y + 14) + "\">" + xml_escape(label) + "</text></g>\n";
     for (int c = 0; c < cols; ++c) {
       const StabilityCell& cell = row.cells[std::size_t(c)];
       if (!cell.present) continue;
