@@ -35,7 +35,7 @@ TEST(StabilityOutcome, EveryStatusAndReasonHasItsWord) {
 }
 
 // A series on five grids, coarsest converged, then one outcome per finer grid.
-SeriesSummary series_with(const std::vector<std::pair<double, std::string>>& grids) {
+SeriesSummary stability_series_with(const std::vector<std::pair<double, std::string>>& grids) {
   SeriesSummary s;
   s.label = "bed superbee fwhm6 bvk centroid";
   for (const auto& [h, status] : grids) {
@@ -48,19 +48,19 @@ SeriesSummary series_with(const std::vector<std::pair<double, std::string>>& gri
 }
 
 TEST(StabilityLine, ConvergesDownToTheLastGridBeforeTheFirstFailure) {
-  const auto s = series_with({{1.0, "invalid"}, {3.3, "converged"}, {2.0, "converged"}, {0.7, "invalid"}});
+  const auto s = stability_series_with({{1.0, "invalid"}, {3.3, "converged"}, {2.0, "converged"}, {0.7, "invalid"}});
   EXPECT_EQ(stability_line(s),
             "converges down to Δ* 2; first failure at Δ* 1: invalid (invalid at 1.000000); 2 failed grids in all");
-  const auto all = series_with({{3.3, "converged"}, {2.0, "converged"}});
+  const auto all = stability_series_with({{3.3, "converged"}, {2.0, "converged"}});
   EXPECT_EQ(stability_line(all), "converges on every finished grid, down to Δ* 2");
-  const auto coarse = series_with({{3.3, "stalled"}, {2.0, "converged"}, {1.0, "queued"}});
+  const auto coarse = stability_series_with({{3.3, "stalled"}, {2.0, "converged"}, {1.0, "queued"}});
   EXPECT_EQ(stability_line(coarse),
             "fails from the coarsest grid: first failure at Δ* 3.3: stalled (stalled at 3.300000); 1 finer grid(s) "
             "converge again (1 grid(s) not finished)");
 }
 
 TEST(StabilityMethods, GciTripletsAreCountedUsableOnlyWhenMonotoneWithPInRange) {
-  SeriesSummary s = series_with({{2.0, "converged"}});
+  SeriesSummary s = stability_series_with({{2.0, "converged"}});
   ExtrapolationView v;
   v.status = "ok";
   v.method = "capped_power";
@@ -92,11 +92,11 @@ TEST(StabilityMethods, GciTripletsAreCountedUsableOnlyWhenMonotoneWithPInRange) 
 TEST(StabilityMap, FailuresFirstOneColumnPerDeltaStarAndTheCapSaysWhatItOmits) {
   std::vector<SeriesSummary> all;
   for (int i = 0; i < 5; ++i) {
-    auto s = series_with({{3.3, "converged"}, {2.0, "converged"}});
+    auto s = stability_series_with({{3.3, "converged"}, {2.0, "converged"}});
     s.label = "ok" + std::to_string(i);
     all.push_back(s);
   }
-  auto bad = series_with({{3.3, "converged"}, {2.0, "invalid"}, {1.0, "invalid"}});
+  auto bad = stability_series_with({{3.3, "converged"}, {2.0, "invalid"}, {1.0, "invalid"}});
   bad.label = "bad";
   all.push_back(bad);
   const StabilityMap m = stability_map(all, 0.5, 2.1, 3);

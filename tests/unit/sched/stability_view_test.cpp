@@ -35,7 +35,7 @@ const std::vector<StabilityCase> kStabilityCases = {
     {"cancelled", "", "", "", "cancelled"},
 };
 
-void fill(Database& db) {
+void fill_stability_db(Database& db) {
   db.exec("INSERT INTO studies(id, name, definition_json) VALUES (1, 'st', '{}')");
   db.exec("INSERT INTO series(id, study_id, position, case_name, convection, fwhm_dp, drag) "
           "VALUES (1, 1, 0, 'bed', 'superbee', 6, 'bvk')");
@@ -65,7 +65,7 @@ TEST(StabilityView, GivesTheReportsOutcomeForEveryStatusAndLeavesVariantsOut) {
   const auto dir = test_support::fresh_scratch_dir("stability_view_test", "words");
   Database db(dir / "g.sqlite", true);
   migrate(db);
-  fill(db);
+  fill_stability_db(db);
   auto st = db.prepare("SELECT job_id, outcome FROM v_stability ORDER BY job_id");
   std::size_t rows = 0;
   while (st.step()) {
