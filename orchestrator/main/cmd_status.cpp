@@ -103,6 +103,13 @@ void add_status_command(CLI::App& app, int& exit_code) {
         std::cout << "orphaned: marked running by a run or daemon that is gone; the next run or daemon adopts "
                      "(Slurm) or requeues them\n";
       if (detail) std::cout << '\n' << study_detail_text(*detail);
+      if (id && !rows.empty()) {  // the outcome of every grid, counted (the report's stability map)
+        const auto counts = stability_status(*store, *id)["counts"];
+        std::string line;
+        for (const auto& [outcome, n] : counts.items())
+          line += (line.empty() ? "" : ", ") + std::to_string(n.get<int>()) + " " + outcome;
+        if (!line.empty()) std::cout << "\ngrids by outcome (stability): " << line << '\n';
+      }
       if (!queue.empty()) {
         std::printf("\n%8s %-14s %-14s %-12s %s\n", "job", "grid", "slurm id", "state", "reason");
         for (const auto& j : queue)

@@ -138,6 +138,12 @@ TEST(StabilityStudy, EveryCellHasTheDocumentedOutcomeAndNoConvergedValueIsWrong)
   for (const auto& [key, outcome] : expected) ++counts[outcome];
   for (const auto& [outcome, n] : counts) EXPECT_EQ(st["counts"].value(outcome, 0), n) << outcome;
   EXPECT_EQ(st["series"].size(), 8u);
+  const auto text = gridfree::test_support::run_merged("cd " + shell_quote(dir.string()) + " && " +
+                                                       shell_quote(kGridfreeExe.string()) +
+                                                       " status stability-reduced --db g.sqlite");
+  EXPECT_NE(text.text.find("grids by outcome (stability): 28 converged, 3 diverged, 8 invalid, 1 stalled"),
+            std::string::npos)
+      << text.text;
 
   // The report's stability map: every failing cell's reason on hover, the CSV.
   const fs::path report = dir / "reports/stability-reduced";
