@@ -27,14 +27,14 @@ inline CommandRun gridfree_in(const std::filesystem::path& dir, const std::strin
 
 // `gridfree args` started in `dir` like gridfree_in, the fake worker taking
 // `fake_sleep` seconds a job (GRIDFREE_FAKE_SLEEP); its output goes to
-// dir/spawned.log. Returns at once with gridfree's pid (the shell execs it).
+// dir/<log> (spawned.log). Returns at once with gridfree's pid (the shell execs it).
 inline pid_t spawn_gridfree_in(const std::filesystem::path& dir, const std::string& args,
-                               const std::string& fake_sleep) {
+                               const std::string& fake_sleep, const std::string& log = "spawned.log") {
   std::vector<std::string> words = {
       "/bin/sh", "-c",
       "cd " + shell_quote(dir.string()) + " && GRIDFREE_WORKER=" + shell_quote(kFakeWorker.string()) +
           " GRIDFREE_FAKE_SLEEP=" + fake_sleep + " exec " + shell_quote(kGridfreeExe.string()) + " " + args + " >" +
-          shell_quote((dir / "spawned.log").string()) + " 2>&1"};
+          shell_quote((dir / log).string()) + " 2>&1"};
   std::vector<char*> argv;
   for (auto& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
