@@ -1,7 +1,8 @@
-// Schema version 10 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
+// Schema version 11 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
 // state; 4: series verdicts; 5: series transfer columns; 6: alignment check;
 // 7: adaptive series; 8: ensembles; 9: indexes for
-// the scheduler at ensemble scale; 10: the series' coverage self-check). Status words (docs/INTERFACE.md §5):
+// the scheduler at ensemble scale; 10: the series' coverage self-check;
+// 11: job hashes of the normalised job document). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -343,7 +344,8 @@ void migrate(Database& db, int target) {
   if (v < 8 && target >= 8) db.exec(kV8Ensembles);  // ensembles (store/schema_ensembles.h)
   if (v < 9 && target >= 9) db.exec(kV9ScaleIndexes);
   if (v < 10 && target >= 10) db.exec(kV10Coverage);
-  if (v < 5 && target >= 5) {
+  if (v < 11 && target >= 11) migrate_job_hashes(db);  // defaults filled in (schema_job_hashes.cpp)
+  if ((v < 5 && target >= 5) || (v < 11 && target >= 11)) {
     auto fk = db.prepare("PRAGMA foreign_key_check");
     if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);
   }

@@ -13,4 +13,8 @@ void migrate_series_transfer(Database& db);
 // study_jobs.alignment_only, v_alignment; v_results without the variants.
 void migrate_alignment(Database& db);
 
+// Step 11 (schema_job_hashes.cpp): job hashes of the normalised document
+// (defaults filled in); jobs that become equal merged into one.
+void migrate_job_hashes(Database& db);
+
 }  // namespace gridfree

@@ -4,6 +4,7 @@
 
 #include "core/version.h"
 #include "job/job_hash.h"
+#include "job/job_normalise.h"
 #include "job/job_spec.h"
 
 namespace gridfree {
@@ -60,14 +61,13 @@ TEST(JobHashDefinition, AnyValueChangeChangesTheHash) {
 }
 
 TEST(JobHashDefinition, IsShaOfCanonicalTextAndSolverVersion) {
-  // numerics.deposition is hashed expanded (presets and defaults written out).
-  json j = example_job();
-  ProblemList problems;
-  const DepositionSpec d = parse_deposition(j["numerics"]["deposition"], "/numerics/deposition", problems);
-  ASSERT_TRUE(problems.empty());
-  const json given = j["numerics"]["deposition"];
-  j["numerics"]["deposition"] = deposition_json(d, given);
+  // The normalised document (defaults written in, numerics.deposition
+  // expanded) is hashed; a document that is its own normalised form hashes
+  // its own canonical text.
+  const json j = normalised_job(example_job());
+  EXPECT_EQ(normalised_job(j), j);
   EXPECT_EQ(job_hash(example_job()), sha256_hex(canonical_json(j) + "\n" + kSolverVersion));
+  EXPECT_EQ(job_hash(j), job_hash(example_job()));
 }
 
 TEST(JobHashDefinition, APresetAndItsExplicitSpellingAreOneJob) {

@@ -11,6 +11,7 @@
 
 #include "core/version.h"
 #include "job/job_hash.h"
+#include "job/job_normalise.h"
 #include "job/job_spec.h"
 
 namespace gridfree {
@@ -71,8 +72,12 @@ std::string canonical_json(const nlohmann::json& j) {
 }
 
 std::string job_hash(const nlohmann::json& job_doc) {
-  // A preset and its explicit spelling (and an omitted default and the
-  // default given) are one job: hash the expanded numerics.deposition.
+  // A job that leaves a default out and the same job with the default
+  // written (or a preset and its explicit spelling) are one job.
+  return sha256_hex(canonical_json(normalised_job(job_doc)) + "\n" + kSolverVersion);
+}
+
+std::string job_hash_before_defaults(const nlohmann::json& job_doc) {
   const nlohmann::json* dep = nullptr;
   if (job_doc.is_object() && job_doc.contains("numerics") && job_doc["numerics"].is_object() &&
       job_doc["numerics"].contains("deposition"))

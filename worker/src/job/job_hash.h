@@ -1,9 +1,11 @@
-// Job identity: SHA-256 of the canonical job JSON + the solver version.
+// Job identity: SHA-256 of the canonical normalised job JSON + the solver
+// version.
 //
+// Normalised (job/job_normalise.h): every default left out written in, and
+// numerics.deposition expanded, so a job that omits a default and the same
+// job that writes it, or a preset and its explicit spelling, are one job.
 // Canonical JSON: object keys sorted, no whitespace, every number written as
 // a double in shortest round-trip form (so 20 and 20.0 hash alike).
-// numerics.deposition is hashed expanded (presets and defaults written out,
-// job/deposition_parse.cpp), so a preset and its explicit spelling are one job.
 #pragma once
 
 #include <string>
@@ -16,5 +18,11 @@ namespace gridfree {
 std::string sha256_hex(std::string_view data);
 std::string canonical_json(const nlohmann::json& j);
 std::string job_hash(const nlohmann::json& job_doc);  // uses kSolverVersion
+
+// The hash before defaults were filled in (databases before schema step
+// 11): only numerics.deposition expanded. Kept for the store's
+// migration to job_hash (store/schema_job_hashes.cpp), which recognises
+// the jobs this solver version hashed that way.
+std::string job_hash_before_defaults(const nlohmann::json& job_doc);
 
 }  // namespace gridfree
