@@ -8,6 +8,11 @@
 
 namespace gridfree {
 
+std::string grid_pointer(const Study& study, std::size_t i) {
+  if (study.adaptive_grids) return "/grids ladder rung " + std::to_string(i + 1);
+  return (study.grid_delta_star.empty() ? "/grids/cells/" : "/grids/delta_star/") + std::to_string(i);
+}
+
 std::vector<GridRow> grid_listing(const Study& study) {
   std::vector<GridRow> rows;
   const bool requested = !study.grid_delta_star.empty();
@@ -17,7 +22,7 @@ std::vector<GridRow> grid_listing(const Study& study) {
       GridRow r;
       r.case_name = c.name;
       r.index = i;
-      r.pointer = (requested ? "/grids/delta_star/" : "/grids/cells/") + std::to_string(i);
+      r.pointer = grid_pointer(study, i);
       if (requested) r.requested = study.grid_delta_star[i];
       r.cells = grids[i];
       r.actual = delta_star_of(c.spec.domain_dp, grids[i]);

@@ -25,12 +25,17 @@ inline constexpr double kMinNeighbourRatio = 1.1;
 struct GridRow {
   std::string case_name;
   std::size_t index = 0;                 // position in the study's grid list
-  std::string pointer;                   // /grids/delta_star/i or /grids/cells/i
+  std::string pointer;                   // grid_pointer(study, index)
   std::optional<double> requested;       // Δ* asked for (none for explicit cells)
   double actual = 0;                     // Δ* of the cells
   std::array<int, 3> cells{};
   std::uint64_t cell_count = 0;
 };
+
+// Where grid `i` of `study` is written: /grids/delta_star/i or
+// /grids/cells/i; for adaptive grids, whose ladder the file does not list,
+// "/grids ladder rung <i+1>" (docs/INTERFACE.md "Grids as a target").
+std::string grid_pointer(const Study& study, std::size_t i);
 
 // Per case in file order, grids in the study's order.
 std::vector<GridRow> grid_listing(const Study& study);

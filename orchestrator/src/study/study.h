@@ -78,6 +78,7 @@ struct Study {
   std::vector<StudyCase> cases;     // in file order
   StudyFactors factors;             // levels as given (missing factor = its default)
   std::map<std::string, nlohmann::json> transfer_levels;  // object deposition levels by name (study_transfer.h)
+  std::map<std::string, std::size_t> deposition_level_index;  // a level's index in the file's factors.deposition
   std::optional<SeriesKey> baseline;  // set for one_at_a_time designs
   std::vector<double> grid_delta_star;            // grids: {"delta_star": [...]}
   std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}

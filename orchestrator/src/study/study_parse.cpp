@@ -3,14 +3,20 @@
 // with its JSON pointer before one InputError is thrown.
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <set>
+#include <variant>
 
 #include "core/input_error.h"
 #include "core/json_fields.h"
+#include "core/follow_on_problems.h"
+#include "study/format_number.h"
+#include "study/grid_listing.h"
 #include "core/schema_validation.h"
 #include "drag/drag_law.h"
 #include "grid/grid.h"
 #include "job/job_spec.h"
+#include "particles/particle_io.h"
 #include "schemes/limiter.h"
 #include "study/case_extends.h"
 #include "study/slurm_block.h"
@@ -299,6 +305,22 @@ void parse_extrapolation(const json& doc, Study& s, ProblemList& problems) {
   }
 }
 
+// A particle file is read at validation, as the worker reads it: a particle
+// outside the domain, overlapping another or of no size is refused now,
+// not as a failed job later (docs/PARTICLES.md).
+void check_particle_file(const CaseSpec& spec, const std::string& at, ProblemList& problems) {
+  if (!std::holds_alternative<FileSpec>(spec.particles)) return;
+  try {
+    load_particles(spec.particles, spec);
+  } catch (const InputError& e) {
+    const auto& all = e.problems();
+    if (all.empty()) return;
+    std::string reason = "the file does not fit the case: " + all.front().where + ": " + all.front().reason;
+    if (all.size() > 1) reason += " (and " + std::to_string(all.size() - 1) + " more)";
+    problems.add(child_pointer(at, "particles") + "/file", reason);
+  }
+}
+
 void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& s, ProblemList& problems) {
   auto cs = doc.find("cases");
   if (cs == doc.end() || !cs->is_object() || cs->empty()) {
@@ -322,6 +344,7 @@ void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& 
       case_problems.append(e.problems());
     }
     check_case_physics(c.doc, at, base_dir, case_problems);
+    if (case_problems.empty()) check_particle_file(c.spec, at, case_problems);
     for (const auto& p : case_problems.problems()) problems.add_once(p.where, p.reason);
     // The job is run from another folder: particle files become absolute.
     if (c.doc.contains("particles") && c.doc["particles"].is_object() &&
@@ -336,30 +359,43 @@ void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& 
 // Grids that are equal for a case, memory above the machine's.
 void check_grids(const Study& s, ProblemList& problems) {
   const double machine = static_cast<double>(physical_memory_bytes());
-  const std::string list = s.grid_delta_star.empty() ? "/grids/cells/" : "/grids/delta_star/";
+  // A grid list's problems are at the grid; an adaptive ladder's at the
+  // field that makes its rungs, naming the rung (the file lists none).
+  const auto where = [&](std::size_t i, const char* ladder_field) {
+    return s.adaptive_grids ? std::string("/grids/") + ladder_field : grid_pointer(s, i);
+  };
+  const auto what = [&](std::size_t i) {
+    return s.adaptive_grids ? "ladder rung " + std::to_string(i + 1) + " (Δ* " + format_number("%.4g", s.grid_delta_star[i]) + ") "
+                            : std::string();
+  };
   for (const auto& c : s.cases) {
     const auto grids = grids_for_case(s, c);
+    std::vector<bool> refused(grids.size(), false);  // a refused grid is no neighbour to compare with
     for (std::size_t i = 0; i < grids.size(); ++i) {
       for (std::size_t j = 0; j < i; ++j)
-        if (grids[i] == grids[j])
-          problems.add_once(list + std::to_string(i),
-                   "gives the same cells as " + list + std::to_string(j) + " for case " + c.name);
+        if (grids[i] == grids[j] && !refused[j])
+          problems.add_once(where(i, "ratio"), what(i) + "gives the same cells as " +
+                                                   (s.adaptive_grids ? "ladder rung " + std::to_string(j + 1)
+                                                                     : grid_pointer(s, j)) +
+                                                   " for case " + c.name);
       if (std::any_of(grids[i].begin(), grids[i].end(), [](int n) { return n > kMaxCellsPerAxis; })) {
-        problems.add_once(list + std::to_string(i),
-                 "gives more than " + std::to_string(kMaxCellsPerAxis) + " cells along one direction for case " +
+        problems.add_once(where(i, "finest_delta_star"),
+                 what(i) + "gives more than " + std::to_string(kMaxCellsPerAxis) + " cells along one direction for case " +
                      c.name + " (docs/LIMITS.md)");
+        refused[i] = true;
         continue;
       }
       if (grids[i][1] < kMinFlowCells) {
-        problems.add_once(list + std::to_string(i),
-                          "gives " + std::to_string(grids[i][1]) + " cell along y, the flow direction, for case " +
+        problems.add_once(where(i, "coarsest_delta_star"),
+                          what(i) + "gives " + std::to_string(grids[i][1]) + " cell along y, the flow direction, for case " +
                               c.name + "; at least " + std::to_string(kMinFlowCells) +
                               " are needed (docs/LIMITS.md)");
+        refused[i] = true;
         continue;
       }
       const double mem = estimated_memory_bytes(grids[i]);
       if (machine > 0 && mem > machine && !s.adaptive_grids)  // adaptive: a cap, not an error
-        problems.add_once(list + std::to_string(i),
+        problems.add_once(where(i, ""),
                  "estimated memory " + human_bytes(mem) + " exceeds this machine's " + human_bytes(machine));
     }
   }
@@ -449,6 +485,17 @@ void check_slurm_block(const json& doc, ProblemList& problems) {
   }
 }
 
+// Whether a problem is at or inside one of `roots` (JSON pointers), or at
+// the document itself.
+bool problems_under(const ProblemList& problems, std::initializer_list<const char*> roots) {
+  for (const auto& p : problems.problems()) {
+    if (p.where.empty() || p.where == "/") return true;
+    for (const std::string root : roots)
+      if (p.where == root || p.where.rfind(root + "/", 0) == 0 || p.where.rfind(root + " ", 0) == 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Study parse_study_document(const json& given, const std::filesystem::path& base_dir) {
@@ -489,10 +536,14 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   parse_alignment(doc, s, problems);  // study_alignment.cpp
   parse_extrapolation(doc, s, problems);
   parse_ensembles(doc, s, problems);
-  if (problems.empty()) check_filter_widths(doc, s, problems);
-  if (problems.empty()) check_grids(s, problems);
-  if (problems.empty()) check_jobs(s, problems);
-  problems.throw_if_any();
+  // The checks of whole grids and jobs need sound parts; each runs when the
+  // parts it reads are, so independent problems are reported together.
+  if (!problems_under(problems, {"/cases", "/factors"})) check_filter_widths(doc, s, problems);
+  if (!problems_under(problems, {"/cases", "/grids"})) check_grids(s, problems);
+  if (!problems_under(problems, {"/cases", "/grids", "/factors", "/design", "/numerics", "/ensembles"})) check_jobs(s, problems);
+  // Each problem once; none inside a value that could not be read (a string
+  // domain_dp has no elements to be > 0): core/follow_on_problems.h.
+  if (!problems.empty()) throw InputError(without_follow_ons(problems.problems()));
   return s;
 }
 

@@ -46,7 +46,10 @@ std::string automatic_name(const json& level) {
   return out;
 }
 
+// The level's pointer in the file (levels refused before it do not shift it).
 std::string level_pointer(const Study& s, const std::string& name) {
+  if (const auto at = s.deposition_level_index.find(name); at != s.deposition_level_index.end())
+    return "/factors/deposition/" + std::to_string(at->second);
   const auto& levels = s.factors.deposition;
   const auto i = std::find(levels.begin(), levels.end(), name) - levels.begin();
   return "/factors/deposition/" + std::to_string(i);
@@ -100,6 +103,7 @@ void parse_deposition_levels(const json& f, const std::string& at, Study& s, Pro
       continue;
     }
     s.factors.deposition.push_back(name);
+    s.deposition_level_index[name] = i;
   }
 }
 
@@ -146,6 +150,17 @@ TransferColumns transfer_columns(const json& deposition) {
 
 void check_deposition_levels(const Study& s, ProblemList& problems) {
   const double fwhm = s.factors.fwhm_dp.empty() ? 6.0 : s.factors.fwhm_dp.front();
+  const json* study_dep = s.numerics.is_object() && s.numerics.contains("deposition") &&
+                                  s.numerics["deposition"].is_object()
+                              ? &s.numerics["deposition"]
+                              : nullptr;
+  // A field of the study's numerics.deposition that contradicts the levels
+  // is reported once, at that field, naming every level it breaks.
+  struct StudyFieldProblem {
+    std::string where, reason;
+    std::vector<std::string> levels;
+  };
+  std::vector<StudyFieldProblem> from_study;
   std::vector<std::pair<std::string, json>> expanded;  // level → explicit transfer
   for (const auto& name : s.factors.deposition) {
     const std::string at = level_pointer(s, name);
@@ -154,13 +169,20 @@ void check_deposition_levels(const Study& s, ProblemList& problems) {
     const DepositionSpec d = parse_deposition(dep, at, level_problems);
     const auto t = s.transfer_levels.find(name);
     for (const auto& p : level_problems.problems()) {
-      // A field the level does not set came from the study's numerics.deposition.
       const std::string key = p.where.size() > at.size() + 1 ? p.where.substr(at.size() + 1) : "";
-      const bool own = t != s.transfer_levels.end() && t->second.contains(key);
-      if (!key.empty() && !own && t != s.transfer_levels.end())
-        problems.add("/numerics/deposition/" + key, p.reason + " (with deposition level " + at + ")");
-      else
-        problems.add(p.where, p.reason);
+      const bool level_sets = t != s.transfer_levels.end() && t->second.contains(key);
+      if (!key.empty() && !level_sets && study_dep != nullptr && study_dep->contains(key)) {
+        const std::string where = "/numerics/deposition/" + key;
+        auto same = std::find_if(from_study.begin(), from_study.end(), [&](const StudyFieldProblem& q) {
+          return q.where == where && q.reason == p.reason;
+        });
+        if (same == from_study.end()) from_study.push_back({where, p.reason, {at}});
+        else same->levels.push_back(at);
+      } else if (key.empty() || level_sets) {
+        problems.add(p.where, p.reason);  // the level's own field, in the file
+      } else {
+        problems.add(at, key + ": " + p.reason);  // a field the level's name implies
+      }
     }
     if (!level_problems.empty()) continue;
     json explicit_dep = deposition_json(d, dep);
@@ -170,6 +192,11 @@ void check_deposition_levels(const Study& s, ProblemList& problems) {
         problems.add(at, "gives the same transfer as " + level_pointer(s, other) + " ('" + other + "'): " +
                              explicit_dep.dump());
     expanded.emplace_back(name, explicit_dep);
+  }
+  for (const auto& q : from_study) {
+    std::string levels;
+    for (const auto& l : q.levels) levels += (levels.empty() ? "" : ", ") + l;
+    problems.add(q.where, q.reason + " (with deposition level" + (q.levels.size() > 1 ? "s " : " ") + levels + ")");
   }
 }
 

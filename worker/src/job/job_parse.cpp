@@ -1,10 +1,12 @@
 // parse_numerics and parse_job (job/job_spec.h): schema validation first
 // (schemas/job.schema.json, every problem with its JSON pointer), then the
-// semantic checks, all collected into one InputError.
+// semantic checks, all collected into one InputError (each problem once,
+// none inside a value the schema could not read: core/follow_on_problems.h).
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "core/follow_on_problems.h"
 #include "core/json_fields.h"
 #include "core/schema_validation.h"
 #include "core/text.h"
@@ -108,13 +110,23 @@ NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, co
 
 JobSpec parse_job(const nlohmann::json& doc, const std::filesystem::path& base_dir) {
   const std::vector<Problem> schema_problems = validate_against_schema(doc, "job.schema");
-  if (!schema_problems.empty()) throw InputError(schema_problems);
-
   ProblemList problems;
+  problems.append(schema_problems);
   JobSpec job;
-  job.case_spec = parse_case(doc.at("case"), "/case", base_dir, problems);
-  job.numerics = parse_numerics(doc.at("numerics"), "/numerics", job.case_spec.domain_dp, problems);
-  problems.throw_if_any();
+  const bool parts = doc.is_object() && doc.contains("case") && doc["case"].is_object() && doc.contains("numerics") &&
+                     doc["numerics"].is_object();
+  if (!parts) throw InputError(schema_problems);
+  try {
+    // The semantic checks run on a document the schema refused too, so
+    // independent problems are reported together.
+    job.case_spec = parse_case(doc.at("case"), "/case", base_dir, problems);
+    job.numerics = parse_numerics(doc.at("numerics"), "/numerics", job.case_spec.domain_dp, problems);
+  } catch (const InputError& e) {
+    problems.append(e.problems());
+  } catch (const std::exception&) {
+    if (schema_problems.empty()) throw;  // a value of the wrong type the schema reported stops the checks there
+  }
+  if (!problems.empty()) throw InputError(without_follow_ons(problems.problems()));
   job.source = doc;
   // Record (and hash) the expanded transfer: a preset and its explicit spelling are one job.
   job.source["numerics"]["deposition"] = deposition_json(job.numerics.deposition, doc["numerics"]["deposition"]);
