@@ -2,6 +2,7 @@
 // main parses, runs one subcommand, and maps the outcome to an exit code.
 #include <algorithm>
 #include <exception>
+#include <memory>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -30,6 +31,23 @@ int main(int argc, char** argv) {
   cli::add_study_commands(app, exit_code);
   app.add_subcommand("version", "print the version (as --version)")->callback([&version] {
     std::cout << version << '\n';
+  });
+  // `gridfree help [COMMAND]`: the same text as `gridfree [COMMAND] --help`.
+  auto help_topic = std::make_shared<std::string>();
+  auto* help = app.add_subcommand("help", "print the help of gridfree or of COMMAND (as COMMAND --help)");
+  help->add_option("COMMAND", *help_topic, "a command");
+  help->callback([&app, help_topic] {
+    // The formatter directly: App::help would print the help of `help` itself.
+    if (help_topic->empty()) {
+      std::cout << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+      return;
+    }
+    std::vector<std::string> names;
+    for (const auto* sub : app.get_subcommands([](const auto*) { return true; })) names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), *help_topic) == names.end())
+      throw InputError("help", unknown_command_message(*help_topic, names));
+    const CLI::App* sub = app.get_subcommand(*help_topic);
+    std::cout << app.get_formatter()->make_help(sub, app.get_name() + " " + sub->get_name(), CLI::AppFormatMode::Normal);
   });
   // A mistyped command: name it and the nearest known one (exit 2).
   if (report_unknown_command(app, argc, argv)) return to_int(ExitCode::kInvalidInput);

@@ -1,6 +1,6 @@
 // Command names as users type them (docs/INTERFACE.md §3): a mistyped command
-// names the nearest one (exit 2), `version` and -V print the version, and
-// each executable's --version names itself.
+// names the nearest one (exit 2), `version` and -V print the version, each
+// executable's --version names itself, and `help COMMAND` is COMMAND --help.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -58,6 +58,21 @@ TEST(CommandNamesCli, ExecutorHelpListsItsChoices) {
   const CommandRun r = run_executable("gridfree", "run --help", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("{local,slurm}"), std::string::npos) << r.out;
+}
+
+TEST(CommandNamesCli, HelpCommandIsTheCommandsHelp) {
+  const fs::path dir = names_dir("help_command");
+  const CommandRun flag = run_executable("gridfree", "run --help", dir);
+  const CommandRun word = run_executable("gridfree", "help run", dir);
+  EXPECT_EQ(word.exit_code, 0) << word.err;
+  EXPECT_EQ(word.out, flag.out);
+  EXPECT_NE(word.out.find("STUDY"), std::string::npos) << word.out;
+  const CommandRun top = run_executable("gridfree", "help", dir);
+  EXPECT_EQ(top.exit_code, 0) << top.err;
+  EXPECT_EQ(top.out, run_executable("gridfree", "--help", dir).out);
+  const CommandRun typo = run_executable("gridfree", "help stauts", dir);
+  EXPECT_EQ(typo.exit_code, 2) << typo.err;
+  EXPECT_NE(typo.err.find("did you mean 'status'?"), std::string::npos) << typo.err;
 }
 
 }  // namespace
