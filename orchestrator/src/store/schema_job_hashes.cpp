@@ -10,6 +10,10 @@
 // changed hash is logged as a 'rehash' event with the old hash; a run
 // folder stays under the old hash (a finished job's result_path still
 // names it; a checkpoint there is not resumed, the job starts over).
+// An sscp_like bed without "emulsion" was a lattice when the job was made
+// (the random emulsion became the default with this step): its spec_json
+// and hash say "emulsion": "lattice", so its result is never served for a
+// random bed, and a rerun of it builds the bed it was defined with.
 #include <map>
 #include <string>
 #include <vector>
@@ -25,7 +29,19 @@ namespace {
 struct StoredJob {
   long long id = 0;
   std::string hash, status;
+  std::string lattice_spec;  // the spec with "emulsion": "lattice" written, when it was a lattice-era sscp_like job
 };
+
+// Writes "emulsion": "lattice" into an sscp_like generator that has none.
+bool mark_lattice_emulsion(nlohmann::json& spec) {
+  if (!spec.is_object() || !spec.contains("case") || !spec["case"].is_object()) return false;
+  auto& c = spec["case"];
+  if (!c.contains("particles") || !c["particles"].is_object() || !c["particles"].contains("generator")) return false;
+  auto& g = c["particles"]["generator"];
+  if (!g.is_object() || g.value("kind", "") != "sscp_like" || g.contains("emulsion")) return false;
+  g["emulsion"] = "lattice";
+  return true;
+}
 
 int progress_rank(const std::string& status) {
   if (status == "done") return 0;
@@ -64,14 +80,18 @@ void migrate_job_hashes(Database& db) {
   {
     auto st = db.prepare("SELECT id, job_hash, spec_json, status FROM jobs ORDER BY id");
     while (st.step()) {
-      StoredJob j{st.as_int(0), st.as_text(1), st.as_text(3)};
+      StoredJob j{st.as_int(0), st.as_text(1), st.as_text(3), {}};
       std::string now = j.hash;
-      const auto spec = nlohmann::json::parse(st.as_text(2), nullptr, false);
-      if (!spec.is_discarded() && job_hash_before_defaults(spec) == j.hash) now = job_hash(spec);
+      auto spec = nlohmann::json::parse(st.as_text(2), nullptr, false);
+      if (!spec.is_discarded() && job_hash_before_defaults(spec) == j.hash) {
+        if (mark_lattice_emulsion(spec)) j.lattice_spec = spec.dump();
+        now = job_hash(spec);
+      }
       by_hash[now].push_back(std::move(j));
     }
   }
   auto rehash = db.prepare("UPDATE jobs SET job_hash = ? WHERE id = ?");
+  auto respec = db.prepare("UPDATE jobs SET spec_json = ? WHERE id = ?");
   auto event = db.prepare("INSERT INTO events(job_id, kind, message) VALUES (?, 'rehash', ?)");
   // Merges first: a kept job's new hash may be another's old one.
   std::vector<std::pair<long long, std::string>> renames;
@@ -82,6 +102,10 @@ void migrate_job_hashes(Database& db) {
     for (std::size_t i = 0; i < jobs.size(); ++i)
       if (i != keep) merge_job(db, jobs[i].id, jobs[keep].id);
     if (jobs[keep].hash != hash) renames.emplace_back(jobs[keep].id, hash);
+    if (!jobs[keep].lattice_spec.empty()) {
+      respec.reset();
+      respec.bind_all(jobs[keep].lattice_spec, jobs[keep].id).run();
+    }
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       if (jobs[i].hash == hash) continue;
       event.reset();

@@ -13,6 +13,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "run_command.h"
 #include "test_files.h"
@@ -84,6 +85,36 @@ TEST_F(ParticlesCli, ConvertsAnMfixFile) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(slurp(dir_ / "converted.csv"), "x,y,z,d\n0.14999999999999999,0.25,0.34999999999999998,0.10000000000000001\n"
                                            "0.45000000000000001,0.55000000000000004,0.65000000000000002,0.10000000000000001\n");
+}
+
+TEST_F(ParticlesCli, ConvertsALammpsDumpAndPrintsItsStructure) {
+  // Two snapshots in SI units of a 1 × 1 × 1 cm box (10 d of 0.1 cm); the
+  // one at timestep 100 is chosen, converted to cm and measured.
+  write("dump.liggghts",
+        "ITEM: TIMESTEP\n100\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 0.01\n0 0.01\n0 0.01\n"
+        "ITEM: ATOMS id x y z radius\n1 0.002 0.003 0.004 0.0005\n2 0.006 0.003 0.004 0.0005\n"
+        "ITEM: TIMESTEP\n200\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp ff\n0 0.01\n0 0.01\n0 0.01\n"
+        "ITEM: ATOMS id x y z radius\n1 0.005 0.005 0.005 0.0005\n");
+  const auto spec = write("dump.json", R"({"domain_dp": [10, 10, 10], "particle_diameter_cm": 0.1,
+                                           "file": "dump.liggghts", "format": "lammps", "units": "si", "timestep": 100})");
+  const CommandRun r = run_worker("particles " + spec.string() + " -o " + (dir_ / "dump.csv").string() + " --stats-json", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(dir_ / "dump.csv"), "x,y,z,d\n0.20000000000000001,0.29999999999999999,0.40000000000000002,0.10000000000000001\n"
+                                      "0.59999999999999998,0.29999999999999999,0.40000000000000002,0.10000000000000001\n");
+  const auto stats = nlohmann::json::parse(r.out);
+  EXPECT_EQ(stats.at("particles"), 2);
+  // Two particles 4 d apart along x: S/N = |1 + exp(i k 4d)|²/4 = 1 at a
+  // period of 1 d and 2 d (in phase), the largest possible.
+  EXPECT_NEAR(stats.at("largest_structure_factor").at("s_over_n").get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(stats.at("solids_fraction_y").at("values").size(), 10u);
+  // Text form, without -o: nothing written, the same count.
+  const CommandRun text = run_worker("particles " + spec.string() + " --stats", dir_);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_EQ(text.out.rfind("structure of 2 particles\n", 0), 0u) << text.out;
+  // Neither -o nor --stats: exit 2 naming -o.
+  const CommandRun none = run_worker("particles " + spec.string(), dir_);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("-o"), std::string::npos) << none.err;
 }
 
 TEST_F(ParticlesCli, UnknownGeneratorKindExits2) {

@@ -89,4 +89,23 @@ TEST(JobHashDefinition, APresetAndItsExplicitSpellingAreOneJob) {
 }
 
 }  // namespace
+TEST(JobHashDefinition, SscpLikeEmulsionDefaultIsHashedAsRandom) {
+  json omitted = example_job();
+  omitted["case"]["particles"] = {{"generator", {{"kind", "sscp_like"}, {"seed", 1}, {"bed_height_dp", 20},
+                                                 {"solids_fraction", 0.58}, {"bubbles", 0}, {"bubble_radius_dp", 3}}}};
+  json random = omitted, lattice = omitted;
+  random["case"]["particles"]["generator"]["emulsion"] = "random";
+  lattice["case"]["particles"]["generator"]["emulsion"] = "lattice";
+  EXPECT_EQ(job_hash(omitted), job_hash(random));
+  EXPECT_NE(job_hash(omitted), job_hash(lattice));
+  // The text hashed before the random emulsion (then a lattice bed) is not the new job's.
+  json before = omitted;
+  ProblemList problems;
+  before["numerics"]["deposition"] =
+      deposition_json(parse_deposition(before["numerics"]["deposition"], "/numerics/deposition", problems),
+                      before["numerics"]["deposition"]);
+  ASSERT_TRUE(problems.empty());
+  EXPECT_NE(job_hash(omitted), sha256_hex(canonical_json(before) + "\n" + kSolverVersion));
+}
+
 }  // namespace gridfree

@@ -89,23 +89,16 @@ class ReportWriter : public ::testing::Test {
 
 TEST_F(ReportWriter, WritesEveryFileAndNoTemporaries) {
   for (const char* name : {"report.md", "report.html", "grids.csv", "series.csv", "differences.csv", "gci.csv",
-<<<<<<< HEAD
-                           "cost.csv", "failures.csv", "coverage.csv", "verdict_counts.csv", "fig2_rde.svg", "speed_accuracy.svg", "speed_accuracy_work.svg",
-=======
-                           "cost.csv", "failures.csv", "coverage.csv", "stability.csv", "stability_series.csv",
-                           "stability_map.svg", "fig2_rde.svg", "speed_accuracy.svg", "speed_accuracy_work.svg",
->>>>>>> 48c8a23 (Where methods fail: the worker classifies every failure (result outcome: stalled vs iteration_cap; ε_s ≥ 1 in a cell is invalid, not failed; a stall with dp* still moving ≥ 1 % a window is diverged without a dp*), every report has a stability map (outcome per series and Δ*, reason on hover, print table, stability.csv, stability_series.csv, GCI usable triplets beside least squares), view v_stability (created at open, no schema step), status --json stability; studies/stability.json with its measured envelope in SOLVER.md, bench/stability_envelope.sh, and a reduced run as an integration test)
+                           "cost.csv", "failures.csv", "coverage.csv", "verdict_counts.csv", "stability.csv",
+                           "stability_series.csv", "stability_map.svg", "fig2_rde.svg", "speed_accuracy.svg",
+                           "speed_accuracy_work.svg",
                            "fig1_01_PC1_superbee_fwhm6_bvk.svg", "gci_01_PC1_superbee_fwhm6_bvk.svg",
                            "fig1_02_PC1_superbee_fwhm6_hkl.svg", "fig1_03_PC2_superbee_fwhm6_bvk.svg",
                            "gci_03_PC2_superbee_fwhm6_bvk.svg"}) {
     EXPECT_TRUE(fs::is_regular_file(dir_ / name)) << name;
   }
   EXPECT_EQ(files_.html, dir_ / "report.html");
-<<<<<<< HEAD
-  EXPECT_EQ(files_.csv.size(), 8u);
-=======
-  EXPECT_EQ(files_.csv.size(), 9u);
->>>>>>> 48c8a23 (Where methods fail: the worker classifies every failure (result outcome: stalled vs iteration_cap; ε_s ≥ 1 in a cell is invalid, not failed; a stall with dp* still moving ≥ 1 % a window is diverged without a dp*), every report has a stability map (outcome per series and Δ*, reason on hover, print table, stability.csv, stability_series.csv, GCI usable triplets beside least squares), view v_stability (created at open, no schema step), status --json stability; studies/stability.json with its measured envelope in SOLVER.md, bench/stability_envelope.sh, and a reduced run as an integration test)
+  EXPECT_EQ(files_.csv.size(), 10u);
   // PDF and PNG beside every SVG when rsvg-convert is installed (install-deps.sh).
   if (!find_svg_converter().empty()) {
     for (const auto& svg : files_.svg) {

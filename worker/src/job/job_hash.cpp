@@ -78,15 +78,15 @@ std::string job_hash(const nlohmann::json& job_doc) {
 }
 
 std::string job_hash_before_defaults(const nlohmann::json& job_doc) {
+  nlohmann::json expanded = job_doc;
   const nlohmann::json* dep = nullptr;
-  if (job_doc.is_object() && job_doc.contains("numerics") && job_doc["numerics"].is_object() &&
-      job_doc["numerics"].contains("deposition"))
-    dep = &job_doc["numerics"]["deposition"];
+  if (expanded.is_object() && expanded.contains("numerics") && expanded["numerics"].is_object() &&
+      expanded["numerics"].contains("deposition"))
+    dep = &expanded["numerics"]["deposition"];
   if (dep && dep->is_object()) {
     ProblemList problems;
     const DepositionSpec spec = parse_deposition(*dep, "/numerics/deposition", problems);
     if (problems.empty()) {
-      nlohmann::json expanded = job_doc;
       expanded["numerics"]["deposition"] = deposition_json(spec, *dep);
       return sha256_hex(canonical_json(expanded) + "\n" + kSolverVersion);
     }

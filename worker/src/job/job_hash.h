@@ -6,6 +6,9 @@
 // job that writes it, or a preset and its explicit spelling, are one job.
 // Canonical JSON: object keys sorted, no whitespace, every number written as
 // a double in shortest round-trip form (so 20 and 20.0 hash alike).
+// An sscp_like generator without "emulsion" is normalised with "emulsion":
+// "random" (docs/PARTICLES.md): the default changed from the lattice to the
+// random packing, and old hashes must not match new beds.
 #pragma once
 
 #include <string>

@@ -55,7 +55,11 @@ void normalise_case(nlohmann::json& c) {
     if (g.is_object() && g.value("kind", "") == "sscp_like") {
       const SscpLikeParams sscp;
       fill(g, "bubble_solids_fraction", sscp.bubble_solids_fraction);
-      fill(g, "relaxation_sweeps", sscp.relaxation_sweeps);
+      // The random emulsion is the default (and takes no relaxation sweeps);
+      // a job written before it existed is migrated as "lattice"
+      // (store/schema_job_hashes.cpp), so no lattice result is served for it.
+      fill(g, "emulsion", std::string("random"));
+      if (g.value("emulsion", "") == "lattice") fill(g, "relaxation_sweeps", sscp.relaxation_sweeps);
     }
   }
 }

@@ -96,10 +96,20 @@ SscpLikeParams read_sscp_like(const GeneratorSpec& spec, const CaseSpec& c, Prob
   p.bubbles = static_cast<int>(read_integer(j, "bubbles", w, problems));
   p.bubble_radius_dp = read_number(j, "bubble_radius_dp", w, problems);
   p.bubble_solids_fraction = read_number(j, "bubble_solids_fraction", w, problems, 0.01);
+  const std::string emulsion = read_string(j, "emulsion", w, problems, "random");
+  if (emulsion == "lattice") p.emulsion = SscpEmulsion::kLattice;
+  else if (emulsion != "random")
+    problems.add(child_pointer(w, "emulsion"), "'" + emulsion + "' is not one of random, lattice");
   p.relaxation_sweeps = static_cast<int>(read_integer(j, "relaxation_sweeps", w, problems, 20));
+  if (p.emulsion != SscpEmulsion::kLattice && j.is_object() && j.contains("relaxation_sweeps"))
+    problems.add(child_pointer(w, "relaxation_sweeps"), "applies only to \"emulsion\": \"lattice\"");
 
-  check_fraction(p.solids_fraction, kMaxLatticeFraction, child_pointer(w, "solids_fraction"),
-                 "the jittered lattice", problems);
+  if (p.emulsion == SscpEmulsion::kLattice)
+    check_fraction(p.solids_fraction, kMaxLatticeFraction, child_pointer(w, "solids_fraction"),
+                   "the jittered lattice", problems);
+  else
+    check_fraction(p.solids_fraction, kMaxRandomEmulsionFraction, child_pointer(w, "solids_fraction"),
+                   "the random dense packing", problems);
   if (p.bed_height_dp < 2 || p.bed_height_dp > c.domain_dp[1])
     problems.add(child_pointer(w, "bed_height_dp"), "must be between 2 and the domain height " +
                                                         std::to_string(c.domain_dp[1]) + " (particle diameters)");

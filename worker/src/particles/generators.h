@@ -4,9 +4,9 @@
 //                    y* < 28 except a sphere (radius 5, centre (15,22,5)) at
 //                    0.01; ε_s = 0.01 for 28 ≤ y* < 50; empty above
 //   uniform_random   a uniform random bed in a box (RSA, ε_s ≤ 0.38)
-//   sscp_like        a packed emulsion (ε_s ≈ 0.55–0.6, jittered FCC lattice
-//                    with vacancies, relaxed by hard-sphere Monte Carlo) with
-//                    a few random bubbles at ε_s ≈ 0.01
+//   sscp_like        a packed emulsion (ε_s ≈ 0.55–0.6: a random dense
+//                    packing, or with "emulsion": "lattice" a jittered FCC
+//                    lattice) with a few random bubbles at ε_s ≈ 0.01
 // Counts per region are round(ε_s,target · V_region / V_p), V_p = π d³/6.
 // Same spec and seed → the same particles, bit for bit, on any platform
 // with IEEE doubles (see particles/random.h).

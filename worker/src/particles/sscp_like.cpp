@@ -5,6 +5,13 @@
 //
 // 1. Bubbles: `bubbles` spheres of radius R, centres uniform in the bed
 //    (y* < bed_height) and at least R from walls, not overlapping each other.
+//
+// emulsion "random" (the default):
+// 2. N_e = round(φ · V_emulsion / V_p) centres packed by overlap removal
+//    with growing diameters (particles/dense_packing.h), centres in the bed
+//    and outside the bubbles.
+//
+// emulsion "lattice" (kept to show how cells alias a crystal's layers):
 // 2. Lattice: an FCC lattice with nearest-neighbour spacing
 //    s = d (0.7405/φ_L)^(1/3), φ_L a little above the target. On each axis
 //    the sites sit on layers at spacing h ≥ s/√2 — stretched to fit the
@@ -18,14 +25,18 @@
 //    < (s − d)/2, which cannot create an overlap.
 // 5. Relaxation: `relaxation_sweeps` sweeps of hard-sphere Monte Carlo
 //    (random trial moves, rejected on overlap, on leaving the bed, or on
-//    entering a bubble) wash out the lattice order.
+//    entering a bubble). At ε_s ≈ 0.58 the crystal does not melt: the
+//    emulsion keeps FCC layers about 0.75 d apart on every axis.
 // 6. Bubble particles: round(ε_b · V_bubble / V_p) per bubble by random
 //    sequential addition inside each sphere.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "particles/dense_packing.h"
 #include "particles/generator_params.h"
 #include "particles/sphere_packer.h"
 
@@ -60,44 +71,18 @@ struct Lattice {
   double spacing = 0;       // guaranteed minimum distance between sites
 };
 
-}  // namespace
-
-GeneratedParticles generate_sscp_like(const SscpLikeParams& p, const CaseSpec& c, const std::string& where) {
-  const double d = c.particle_diameter_cm, r = 0.5 * d;
-  const Vec3 L = c.domain_cm();
-  const double vp = particle_volume(d);
-  const double bed_top = p.bed_height_dp * d;
-  const double radius = p.bubble_radius_dp * d;
-  SpherePacker packer(L, periodic_axes(c), d);
-  ParticleRandom rng(p.seed);
-
+// Steps 2–5 of the lattice emulsion (header comment).
+void place_lattice_emulsion(const SscpLikeParams& p, SpherePacker& packer, ParticleRandom& rng,
+                            const std::vector<Vec3>& bubbles, double radius, double bed_top, std::size_t n_emulsion,
+                            const std::string& where) {
+  const double d = packer.diameter(), r = 0.5 * d;
   // Centres allowed for emulsion particles: the packer's bounds, y <= bed_top − r.
   const auto in_bed = [&](const Vec3& x) { return packer.within_bounds(x) && x[1] <= bed_top - r; };
-
-  // 1. Bubbles.
-  std::vector<Vec3> bubbles;
   const auto in_a_bubble = [&](const Vec3& x) {
     return std::any_of(bubbles.begin(), bubbles.end(), [&](const Vec3& b) {
       return packer.cells().distance_squared(x, b) < radius * radius;
     });
   };
-  for (int attempt = 0; static_cast<int>(bubbles.size()) < p.bubbles; ++attempt) {
-    if (attempt > 100000) throw InputError(where + "/bubbles", "could not fit that many non-overlapping bubbles in the bed");
-    Vec3 b{};
-    for (int a = 0; a < 3; ++a) {
-      const double top = a == 1 ? bed_top : L[a];
-      b[a] = packer.periodic(a) ? rng.uniform(0, L[a]) : rng.uniform(radius, top - radius);
-    }
-    const bool apart = std::none_of(bubbles.begin(), bubbles.end(), [&](const Vec3& o) {
-      return packer.cells().distance_squared(b, o) < 4 * radius * radius;
-    });
-    if (apart) bubbles.push_back(b);
-  }
-  const double v_bubble = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
-  const double v_bubbles = v_bubble * static_cast<double>(bubbles.size());
-  const double v_emulsion = L[0] * bed_top * L[2] - v_bubbles;
-  const auto n_emulsion = static_cast<std::size_t>(std::llround(p.solids_fraction * v_emulsion / vp));
-
   // 2. The loosest lattice (φ_L from target + 0.05 upwards) with enough sites.
   Lattice lattice;
   for (double phi_lattice = std::min(p.solids_fraction + 0.05, 0.70);; phi_lattice += 0.005) {
@@ -157,6 +142,57 @@ GeneratedParticles generate_sscp_like(const SscpLikeParams& p, const CaseSpec& c
     const double ratio = n_emulsion > 0 ? static_cast<double>(accepted) / static_cast<double>(n_emulsion) : 0.5;
     if (ratio < 0.3) step = std::max(0.8 * step, 0.005 * d);
     else if (ratio > 0.5) step = std::min(1.25 * step, 0.5 * d);
+  }
+
+}
+
+}  // namespace
+
+GeneratedParticles generate_sscp_like(const SscpLikeParams& p, const CaseSpec& c, const std::string& where) {
+  const double d = c.particle_diameter_cm, r = 0.5 * d;
+  const Vec3 L = c.domain_cm();
+  const double vp = particle_volume(d);
+  const double bed_top = p.bed_height_dp * d;
+  const double radius = p.bubble_radius_dp * d;
+  SpherePacker packer(L, periodic_axes(c), d);
+  ParticleRandom rng(p.seed);
+
+  // 1. Bubbles.
+  std::vector<Vec3> bubbles;
+  for (int attempt = 0; static_cast<int>(bubbles.size()) < p.bubbles; ++attempt) {
+    if (attempt > 100000) throw InputError(where + "/bubbles", "could not fit that many non-overlapping bubbles in the bed");
+    Vec3 b{};
+    for (int a = 0; a < 3; ++a) {
+      const double top = a == 1 ? bed_top : L[a];
+      b[a] = packer.periodic(a) ? rng.uniform(0, L[a]) : rng.uniform(radius, top - radius);
+    }
+    const bool apart = std::none_of(bubbles.begin(), bubbles.end(), [&](const Vec3& o) {
+      return packer.cells().distance_squared(b, o) < 4 * radius * radius;
+    });
+    if (apart) bubbles.push_back(b);
+  }
+  const double v_bubble = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  const double v_bubbles = v_bubble * static_cast<double>(bubbles.size());
+  const double v_emulsion = L[0] * bed_top * L[2] - v_bubbles;
+  const auto n_emulsion = static_cast<std::size_t>(std::llround(p.solids_fraction * v_emulsion / vp));
+
+  if (p.emulsion == SscpEmulsion::kLattice) {
+    place_lattice_emulsion(p, packer, rng, bubbles, radius, bed_top, n_emulsion, where);
+  } else {
+    DensePackingRegion region;
+    region.length = L;
+    for (int a = 0; a < 3; ++a) {
+      region.periodic[a] = packer.periodic(a);
+      region.lo[a] = packer.lo(a);
+      region.hi[a] = a == 1 ? bed_top - r : packer.hi(a);
+    }
+    region.holes = bubbles;
+    region.hole_radius = radius;
+    try {
+      for (const Vec3& x : random_dense_packing(region, d, n_emulsion, rng)) packer.add(x);
+    } catch (const std::runtime_error& e) {
+      throw InputError(where + "/solids_fraction", std::string("the random packing did not converge: ") + e.what());
+    }
   }
 
   // 6. The dilute bubbles.
