@@ -124,6 +124,11 @@ TEST(JobNormalise, SscpGeneratorDefaults) {
   json b = a;
   const std::string g = "/generator/allOf/2/then/properties/";
   b["case"]["particles"]["generator"]["bubble_solids_fraction"] = schema_default(g + "bubble_solids_fraction/default");
+  b["case"]["particles"]["generator"]["emulsion"] = schema_default(g + "emulsion/default");
+  EXPECT_EQ(job_hash(a), job_hash(b));
+  // The lattice's relaxation sweeps: its default written or left out, one job.
+  a["case"]["particles"]["generator"]["emulsion"] = "lattice";
+  b["case"]["particles"]["generator"]["emulsion"] = "lattice";
   b["case"]["particles"]["generator"]["relaxation_sweeps"] = schema_default(g + "relaxation_sweeps/default");
   EXPECT_EQ(job_hash(a), job_hash(b));
   b["case"]["particles"]["generator"]["relaxation_sweeps"] = 5;

@@ -115,3 +115,30 @@ TEST(StoreJobHashMigration, TwoSpellingsOfOneJobBecomeOneKeepingTheFinishedOne) 
 
 }  // namespace
 }  // namespace gridfree
+
+namespace gridfree {
+namespace {
+
+// An sscp_like job of before the random emulsion (no "emulsion": its bed was
+// the lattice) keeps a lattice identity: it never answers for the random
+// bed the same text now means, and its spec says lattice for a rerun.
+TEST(StoreJobHashMigration, ALatticeEraSscpJobStaysALatticeJob) {
+  json old_doc = test::contract_job();
+  old_doc["case"]["particles"] = {{"generator", {{"kind", "sscp_like"}, {"seed", 1}}}};
+  const auto file = test_support::fresh_db_path("store_job_hash_migration_test", "lattice");
+  {
+    Database db(file, true);
+    migrate(db, 10);
+    db.exec("INSERT INTO jobs(id, job_hash, spec_json, status, nx, ny, nz, cells) VALUES (1, '" +
+            job_hash_before_defaults(old_doc) + "', '" + old_doc.dump() + "', 'done', 30, 200, 10, 60000);");
+  }
+  Store store(file, false);
+  json lattice = old_doc;
+  lattice["case"]["particles"]["generator"]["emulsion"] = "lattice";
+  EXPECT_EQ(text(store, "SELECT job_hash FROM jobs WHERE id = 1"), job_hash(lattice));
+  EXPECT_NE(text(store, "SELECT job_hash FROM jobs WHERE id = 1"), job_hash(old_doc));  // old_doc now means random
+  EXPECT_EQ(json::parse(text(store, "SELECT spec_json FROM jobs WHERE id = 1")), lattice);
+}
+
+}  // namespace
+}  // namespace gridfree
