@@ -21,6 +21,13 @@ ChartAxis delta_star_axis(std::string label) {
   return axis;
 }
 
+ChartAxis rde_percent_axis() {
+  ChartAxis axis{"RDE (%)", AxisScale::linear, 0.0, std::nullopt};
+  axis.auto_log = true;
+  axis.tick_suffix = "%";
+  return axis;
+}
+
 std::optional<double> finest_u(const SeriesSummary& s) {
   if (!s.extrapolation || s.extrapolation->grids.empty()) return std::nullopt;
   return s.extrapolation->grids.front().u;

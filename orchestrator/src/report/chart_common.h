@@ -17,6 +17,8 @@ std::string series_slug(const SeriesSummary& s, std::size_t index);
 std::string title_suffix(const SeriesSummary& s);
 // The Δ* axis: linear from 0, log when the grids span more than a decade.
 ChartAxis delta_star_axis(std::string label = "Δ* (cell size / particle diameter)");
+// The RDE axis in percent: linear from 0, log when the data span more than a decade.
+ChartAxis rde_percent_axis();
 // U_1 of the series' finest grid (an interval about f_1, not about f0), if any.
 std::optional<double> finest_u(const SeriesSummary& s);
 // "f_{0} = 1017.0": f0 rounded to the digits U_1 supports (text_format.h),

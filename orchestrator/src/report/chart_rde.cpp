@@ -13,9 +13,7 @@ Chart rde_chart(const std::vector<SeriesSummary>& series, std::optional<double> 
   chart.subtitle = "series with at least 4 converged grids, each with its verdict (not converged: dashed, hollow); "
                    "log axes when the data span more than a decade";
   chart.x = delta_star_axis();
-  chart.y = {"RDE (%)", AxisScale::linear, 0.0, std::nullopt};
-  chart.y.auto_log = true;
-  chart.y.tick_suffix = "%";
+  chart.y = rde_percent_axis();
   for (std::size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];
     if (!s.extrapolation) continue;

@@ -75,9 +75,7 @@ Chart rde_band_chart(const std::vector<SeriesSummary>& series, const std::string
   chart.subtitle = "at each Δ*: the median over the series (solid) and the 10th and 90th percentiles (dashed); "
                    "every series' value in grids.csv";
   chart.x = delta_star_axis();
-  chart.y = {"RDE (%)", AxisScale::linear, 0.0, std::nullopt};
-  chart.y.auto_log = true;
-  chart.y.tick_suffix = "%";
+  chart.y = rde_percent_axis();
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const auto& by_grid = rde[levels[i]];
     if (by_grid.empty()) continue;
