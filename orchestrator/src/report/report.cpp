@@ -90,8 +90,12 @@ void write_series_pages(const ReportContent& content, const std::filesystem::pat
   }
   std::error_code ec;
   std::vector<std::filesystem::path> stale;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    if (!current.count(entry.path().filename().string())) stale.push_back(entry.path());
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    // A temporary (".<file>.tmp-<pid>-<n>") may be another writer's in flight:
+    // those of killed writers went with remove_stale_temporaries above.
+    if (!name.starts_with('.') && !current.count(name)) stale.push_back(entry.path());
+  }
   for (const auto& path : stale) std::filesystem::remove(path, ec);
   spdlog::debug("report: {} series pages, {} files rewritten, {} stale removed", content.series.size(), rewritten,
                 stale.size());

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -130,6 +131,17 @@ TEST_F(SummaryLayout, ARewriteTouchesOnlyWhatChanged) {
     if (before.at(name) != inode) changed.push_back(name);
   ASSERT_FALSE(changed.empty());
   for (const auto& name : changed) EXPECT_NE(name.find("07_B"), std::string::npos) << name;
+}
+
+TEST_F(SummaryLayout, ALiveWritersTemporaryInSeriesIsLeftAlone) {
+  write_study_report(layout_study(5, {"bvk", "hkl", "wen_yu"}, {3, 6}), dir_, test::fake_extrapolation);
+  const fs::path live = dir_ / "series" / (".page.html.tmp-" + std::to_string(::getpid()) + "-1");
+  std::ofstream(live) << "half";
+  const fs::path stale_page = dir_ / "series" / "99_gone.html";
+  std::ofstream(stale_page) << "a series no longer in the study";
+  write_study_report(layout_study(5, {"bvk", "hkl", "wen_yu"}, {3, 6}), dir_, test::fake_extrapolation);
+  EXPECT_TRUE(fs::exists(live));  // this process is alive: its temporary is in flight
+  EXPECT_FALSE(fs::exists(stale_page));
 }
 
 TEST_F(SummaryLayout, AStudyBackOnOnePageKeepsNoSeriesPages) {
