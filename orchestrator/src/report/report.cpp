@@ -101,15 +101,6 @@ void write_series_pages(const ReportContent& content, const std::filesystem::pat
                 stale.size());
 }
 
-// A table of every series written series by series: the text of the CSV,
-// never the whole Table (report_content.h, head_of_series_tables).
-std::string csv_by_series(const std::vector<SeriesSummary>& series,
-                          Table (*of_series)(const std::vector<SeriesSummary>&)) {
-  std::string out = to_csv(of_series({}));
-  for (const auto& s : series) out += to_csv(of_series({s}), false);
-  return out;
-}
-
 }  // namespace
 
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,

@@ -255,4 +255,11 @@ Table coverage_table(const std::vector<SeriesSummary>& series) {
   return t;
 }
 
+std::string csv_by_series(const std::vector<SeriesSummary>& series,
+                          Table (*of_series)(const std::vector<SeriesSummary>&)) {
+  std::string out = to_csv(of_series({}));
+  for (const auto& s : series) out += to_csv(of_series({s}), false);
+  return out;
+}
+
 }  // namespace gridfree

@@ -1,6 +1,8 @@
 // The "Where methods fail" section (stability_section.h).
 #include "report/stability_section.h"
 
+#include "report/report_tables.h"
+
 #include <algorithm>
 
 #include "report/atomic_file.h"
@@ -220,7 +222,7 @@ std::string stability_section_markdown(const ReportContent& c) {
 
 void write_stability_files(const ReportContent& c, const std::filesystem::path& dir, ReportFiles& files) {
   files.csv.push_back(dir / kStabilityCsv);
-  write_file_atomically(files.csv.back(), to_csv(stability_grid_table(c.series)));
+  write_file_atomically(files.csv.back(), csv_by_series(c.series, stability_grid_table));
   const StabilityMap all = stability_map(c.series, c.data.p_low, c.data.p_high, c.series.size());
   files.csv.push_back(dir / kStabilitySeriesCsv);
   write_file_atomically(files.csv.back(), to_csv(stability_series_table(all)));
