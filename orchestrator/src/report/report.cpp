@@ -145,8 +145,7 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
     const std::string svg = render_svg_file(c.chart);
     // An unchanged chart keeps its PDF/PNG: the report is rewritten after
     // every finished series, most charts stay the same.
-    const bool unchanged = read_file(files.svg.back()) == svg;
-    if (!unchanged) write_file_atomically(files.svg.back(), svg);
+    const bool unchanged = !write_if_changed(files.svg.back(), svg);
     if (converter.empty()) continue;
     auto pdf = files.svg.back(), png = files.svg.back();
     pdf.replace_extension(".pdf");
