@@ -44,13 +44,17 @@ test-unit: build
 
 # Unit and integration tests under AddressSanitizer + UndefinedBehaviorSanitizer
 # (GCC, -O1 -g1); verification tests are neither built nor run there (minutes
-# of numerics, no new paths).
+# of numerics, no new paths). Nor are the tests that time a real Slurm cluster
+# or the worker against itself (SANITIZE_EXCLUDE, docs/LIMITS.md): their code
+# paths run there through the fake-sbatch and timeout tests.
+SANITIZE_EXCLUDE ?= ^(SlurmCluster|RunTimeoutResume)\.
 test-sanitize: test-deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_SANITIZE=ON -DGRIDFREE_BUILD_BENCH=OFF \
 	  -DGRIDFREE_BUILD_VERIFICATION_TESTS=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && OMP_WAIT_POLICY=passive ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
-	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L 'unit|integration' $(CTEST_ARGS)
+	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -L 'unit|integration' \
+	  $(if $(SANITIZE_EXCLUDE),-E '$(SANITIZE_EXCLUDE)') $(CTEST_ARGS)
 
 # Each libFuzzer target for FUZZ_SECONDS on its corpus (fuzz/corpus/<name>,
 # read only; new inputs go to $(FUZZ_BUILD)/corpus). Needs clang.

@@ -7,11 +7,17 @@
  *
  *   instant_worker solve JOB.json -o RESULT.json [ignored options]
  *   instant_worker --version
+ *
+ * INSTANT_WORKER_LOG=FILE: each solve appends its RESULT path to FILE (one
+ * write of one line, O_APPEND), so bench/stop_latency.sh can count how
+ * often each job ran.
  */
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* The n numbers of the array after "key" in text; 0 when not found. */
 static int numbers_after(const char* text, const char* key, double* out, int n) {
@@ -28,6 +34,20 @@ static int numbers_after(const char* text, const char* key, double* out, int n) 
     while (*p == ' ' || *p == ',' || *p == '\n' || *p == '\t' || *p == '\r') ++p;
   }
   return 1;
+}
+
+/* Appends "result\n" to $INSTANT_WORKER_LOG when it is set. */
+static int log_invocation(const char* result) {
+  const char* log = getenv("INSTANT_WORKER_LOG");
+  if (!log || !*log) return 0;
+  char line[4096];
+  const int n = snprintf(line, sizeof line, "%s\n", result);
+  const int fd = open(log, O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd < 0 || n <= 0 || n >= (int)sizeof line || write(fd, line, (size_t)n) != n) {
+    perror(log);
+    return 1;
+  }
+  return close(fd) == 0 ? 0 : 1;
 }
 
 int main(int argc, char** argv) {
@@ -78,5 +98,5 @@ int main(int argc, char** argv) {
     perror(result);
     return 1;
   }
-  return 0;
+  return log_invocation(result);
 }

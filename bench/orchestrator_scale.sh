@@ -14,6 +14,11 @@
 # BENCH_EXPORT=0: gridfree runs with a PATH without rsvg-convert, so the
 # reports are written without their PDF/PNG copies (at 600 series those take
 # rsvg-convert minutes per report write, in child processes not counted).
+# BENCH_EXECUTOR=slurm: through a throwaway one-node Slurm
+# (tests/integration/slurm/slurm_cluster.sh; root, Slurm installed), `run
+# --executor slurm --mem 64 --time 10` (fixed small: the cost model would ask
+# the finest grids for more memory than the node has); BENCH_J then counts
+# array tasks at once (default 8, the node's CPUs).
 #
 # Prints per size: jobs, wall s, jobs/s, the orchestrator's own CPU (user +
 # system of the `gridfree` process alone, read from /proc every 0.1 s, so
@@ -31,9 +36,23 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 tick=$(getconf CLK_TCK)
-jobs_at_once=${BENCH_J:-2}
+executor_flags=()
+case ${BENCH_EXECUTOR:-local} in
+  local) jobs_at_once=${BENCH_J:-2} ;;
+  slurm) jobs_at_once=${BENCH_J:-8}
+         trap '"$here/tests/integration/slurm/slurm_cluster.sh" stop "$work/cluster"; rm -rf "$work"' EXIT
+         eval "$("$here/tests/integration/slurm/slurm_cluster.sh" start "$work/cluster")"
+         executor_flags=(--executor slurm --mem 64 --time 10) ;;
+  *) echo "BENCH_EXECUTOR: local or slurm, not '${BENCH_EXECUTOR}'" >&2; exit 2 ;;
+esac
 path_for_run=$PATH
-if [[ ${BENCH_EXPORT:-1} == 0 ]]; then mkdir -p "$work/no_converter"; path_for_run="$work/no_converter"; fi
+if [[ ${BENCH_EXPORT:-1} == 0 ]]; then  # the PATH's tools gridfree uses, without rsvg-convert
+  mkdir -p "$work/no_converter"
+  for tool in sbatch squeue scancel scontrol sinfo; do
+    ! command -v "$tool" >/dev/null || ln -s "$(command -v "$tool")" "$work/no_converter/$tool"
+  done
+  path_for_run="$work/no_converter"
+fi
 case ${BENCH_WORKER:-instant} in
   instant) worker="$work/instant_worker"
            cc -O2 -o "$worker" "$here/bench/instant_worker.c" -lm ;;
@@ -42,23 +61,7 @@ case ${BENCH_WORKER:-instant} in
 esac
 
 study_of() {  # K → a study document on stdout
-  python3 - "$here/studies/quickstart.json" "$1" <<'EOF'
-import json, sys
-base = json.load(open(sys.argv[1]))
-k = int(sys.argv[2])
-case = base["cases"]["PC1"]
-doc = {
-    "schema": base["schema"],
-    "name": f"scale{k}",
-    "description": f"orchestrator scale benchmark: {k} cases x 6 drag laws x 18 grids",
-    "cases": {f"ok{i}": dict(case, particles={"generator": {"kind": "bursting_bubble", "seed": i + 1}}) for i in range(k)},
-    "factors": {"convection": ["superbee"], "fwhm_dp": [6], "drag": ["bvk", "gidaspow", "gidaspow_blend", "wen_yu", "hkl", "syamlal_obrien"]},
-    "design": "factorial",
-    "grids": {"delta_star": [3.3, 2.762, 2.311, 1.934, 1.619, 1.355, 1.134, 0.949, 0.794, 0.665,
-                             0.556, 0.466, 0.39, 0.326, 0.273, 0.228, 0.191, 0.16]},
-}
-print(json.dumps(doc, indent=1))
-EOF
+  python3 "$here/bench/scale_study.py" "$here/studies/quickstart.json" "$1"
 }
 
 printf '%8s %8s %8s %10s %12s\n' jobs wall_s jobs/s orch_cpu_s cpu_ms/job
@@ -69,7 +72,8 @@ for k in "${sizes[@]}"; do
   jobs=$((108 * k))
   start=$(date +%s.%N)
   (cd "$dir" && PATH="$path_for_run" GRIDFREE_WORKER="$worker" \
-     "$bin/gridfree" run study.json --db "$dir/db.sqlite" -j "$jobs_at_once" > "$dir/run.log" 2>&1) &
+     "$bin/gridfree" run study.json --db "$dir/db.sqlite" -j "$jobs_at_once" \
+       "${executor_flags[@]}" > "$dir/run.log" 2>&1) &
   runner=$!
   pid=""
   cpu=0

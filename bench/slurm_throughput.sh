@@ -34,10 +34,11 @@ end=$(date +%s.%N)
 jobs=$(sqlite3 b.sqlite "SELECT COUNT(*) FROM results WHERE status = 'converged'")
 submissions=$(ls b.sqlite.runs/slurm/*.sbatch | wc -l)
 # Added latency: recorded_at (UTC, ms) minus the exit_code file's mtime.
-sqlite3 -separator ' ' b.sqlite "SELECT j.job_hash, (julianday(r.recorded_at) - 2440587.5) * 86400.0
+# The run folder is the result file's (sharded: <db>.runs/<hh>/<job_hash>/).
+sqlite3 -separator ' ' b.sqlite "SELECT (julianday(r.recorded_at) - 2440587.5) * 86400.0, j.result_path
   FROM results r JOIN jobs j ON j.id = r.job_id" |
-  while read -r hash recorded; do
-    echo "$recorded $(stat -c %.9Y "b.sqlite.runs/$hash/exit_code")"
+  while read -r recorded result; do
+    echo "$recorded $(stat -c %.9Y "$(dirname "$result")/exit_code")"
   done | awk '{ print $1 - $2 }' | sort -g > latency.txt
 median=$(awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }' latency.txt)
 p90=$(awk '{ a[NR] = $1 } END { print a[int(NR * 0.9)] }' latency.txt)
