@@ -47,31 +47,45 @@ LocalExecutor::~LocalExecutor() { kill_all(); }
 
 namespace {
 
-// fork + a child that waits on `gate_read` before exec'ing argv (see
-// local_executor.h). Only async-signal-safe calls between fork and exec.
-// Returns the pid, or -errno.
-pid_t spawn_held(char* const* argv, int log_fd, int gate_read, int gate_write) {
-  const pid_t pid = ::fork();
-  if (pid != 0) return pid < 0 ? -errno : pid;
-  ::setpgid(0, 0);  // its own process group, led by the worker
-  struct sigaction dfl {};
-  dfl.sa_handler = SIG_DFL;
-  for (int sig : {SIGINT, SIGTERM, SIGPIPE, SIGHUP, SIGCHLD}) ::sigaction(sig, &dfl, nullptr);
-  sigset_t none;
+// A held worker waits in /bin/sh for the orchestrator's one byte on fd 3
+// (the gate's read end), then replaces the shell by the worker: same pid,
+// same start time. At EOF without the byte (the orchestrator is gone) the
+// shell exits 0 and the worker never runs. `read` returns non-zero at EOF
+// even after reading "x" (no newline), so the byte itself is tested.
+constexpr const char* kGateScript = "IFS= read -r go <&3; [ \"$go\" = x ] || exit 0; exec 3<&- \"$@\"";
+
+// posix_spawn (no copy of the orchestrator's page tables, whose size grows
+// with the study: fork's copy and copy-on-write faults were most of the
+// orchestrator's CPU per job at 50 000 jobs, docs/BENCHMARKS.md) of argv in
+// its own process group, stdin /dev/null, stdout+stderr to `log`, default
+// signal dispositions and an empty mask. gate_read >= 0: through
+// kGateScript, the gate on fd 3. Returns the pid, or -errno.
+pid_t spawn_worker(const std::vector<char*>& argv, const std::string& log, int gate_read) {
+  std::string sh = "/bin/sh", dash_c = "-c", script = kGateScript, name = "gridfree-held";
+  std::vector<char*> args;
+  if (gate_read >= 0) args = {sh.data(), dash_c.data(), script.data(), name.data()};
+  args.insert(args.end(), argv.begin(), argv.end());  // argv ends with nullptr
+  posix_spawn_file_actions_t fa;
+  posix_spawnattr_t attr;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawnattr_init(&attr);
+  posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  if (gate_read >= 0) posix_spawn_file_actions_adddup2(&fa, gate_read, 3);  // dup2 clears FD_CLOEXEC
+  sigset_t none, defaults;
   sigemptyset(&none);
-  ::sigprocmask(SIG_SETMASK, &none, nullptr);
-  ::close(gate_write);
-  char byte = 0;
-  ssize_t n = 0;
-  do n = ::read(gate_read, &byte, 1);
-  while (n < 0 && errno == EINTR);
-  if (n != 1) ::_exit(0);  // the orchestrator is gone: never run the worker
-  const int null_fd = ::open("/dev/null", O_RDONLY);
-  if (null_fd < 0 || ::dup2(null_fd, STDIN_FILENO) < 0 || ::dup2(log_fd, STDOUT_FILENO) < 0 ||
-      ::dup2(log_fd, STDERR_FILENO) < 0)
-    ::_exit(127);
-  ::execve(argv[0], argv, environ);
-  ::_exit(127);
+  sigemptyset(&defaults);
+  for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGHUP, SIGCHLD}) sigaddset(&defaults, s);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setpgroup(&attr, 0);  // its own process group, led by the worker
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, args[0], &fa, &attr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
+  return rc == 0 ? pid : -rc;
 }
 
 }  // namespace
@@ -94,79 +108,32 @@ void LocalExecutor::start(const JobLaunch& job) {
   for (const auto& a : argv_s) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   const std::string log = (job.run_dir / "worker.log").string();
-  if (job.hold) {
-    start_held(job, argv, log);
-    return;
-  }
-
-  posix_spawn_file_actions_t fa;
-  posix_spawnattr_t attr;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawnattr_init(&attr);
-  posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
-  sigset_t none, defaults;
-  sigemptyset(&none);
-  sigemptyset(&defaults);
-  for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGHUP, SIGCHLD}) sigaddset(&defaults, s);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setpgroup(&attr, 0);  // its own process group, led by the worker
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], &fa, &attr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
-  posix_spawnattr_destroy(&attr);
-  if (rc != 0) {
-    JobExit e;
-    e.job_id = job.job_id;
-    e.how = JobExit::How::kLaunchFailed;
-    e.detail = worker_.string() + ": " + std::strerror(rc);
-    e.run_dir = job.run_dir;
-    failed_launches_.push_back(std::move(e));
-    return;
-  }
-  Child c;
-  c.job_id = job.job_id;
-  c.run_dir = job.run_dir;
-  c.started = Clock::now();
-  c.timeout_s = job.timeout_s;
-  c.launch_grace_s = stop_grace_for_run(job.run_dir, stop_grace_s_);
-  if (job.timeout_s > 0)
-    c.deadline = c.started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(job.timeout_s));
-  running_[pid] = std::move(c);
-}
-
-void LocalExecutor::start_held(const JobLaunch& job, const std::vector<char*>& argv, const std::string& log) {
   JobExit failed;
   failed.job_id = job.job_id;
   failed.how = JobExit::How::kLaunchFailed;
   failed.run_dir = job.run_dir;
-  if (::access(argv[0], X_OK) != 0) {
-    failed.detail = worker_.string() + ": " + std::strerror(errno);
-    failed_launches_.push_back(std::move(failed));
-    return;
-  }
-  const int log_fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   int gate[2] = {-1, -1};
-  if (log_fd < 0 || ::pipe2(gate, O_CLOEXEC) != 0) {
-    failed.detail = log + ": " + std::strerror(errno);
-    if (log_fd >= 0) ::close(log_fd);
-    failed_launches_.push_back(std::move(failed));
-    return;
+  if (job.hold) {
+    // Held: the shell would only report a missing worker once released.
+    if (::access(argv[0], X_OK) != 0) {
+      failed.detail = worker_.string() + ": " + std::strerror(errno);
+      failed_launches_.push_back(std::move(failed));
+      return;
+    }
+    if (::pipe2(gate, O_CLOEXEC) != 0) {
+      failed.detail = std::string("pipe: ") + std::strerror(errno);
+      failed_launches_.push_back(std::move(failed));
+      return;
+    }
   }
-  const pid_t pid = spawn_held(argv.data(), log_fd, gate[0], gate[1]);
-  ::close(log_fd);
-  ::close(gate[0]);
+  const pid_t pid = spawn_worker(argv, log, gate[0]);
+  if (gate[0] >= 0) ::close(gate[0]);
   if (pid < 0) {
-    ::close(gate[1]);
-    failed.detail = std::string("fork: ") + std::strerror(-pid);
+    if (gate[1] >= 0) ::close(gate[1]);
+    failed.detail = worker_.string() + ": " + std::strerror(-pid);
     failed_launches_.push_back(std::move(failed));
     return;
   }
-  ::setpgid(pid, pid);  // also from the parent, so killpg works before the child gets to it
   Child c;
   c.job_id = job.job_id;
   c.run_dir = job.run_dir;

@@ -7,11 +7,13 @@
 // after the grace period: stop_grace_s (kStopGraceSeconds) plus 1.5 × the
 // worker's longest outer iteration so far (exec/worker_progress.h).
 //
-// A held launch (JobLaunch::hold) forks a child that sets up its process
-// group and then blocks reading a pipe from the orchestrator; release()
-// writes one byte and the child execs the worker (same pid, same start time,
-// so the recorded identity stays valid). If the orchestrator dies first, the
-// pipe closes and the child exits without running the worker.
+// A held launch (JobLaunch::hold) starts /bin/sh in the worker's process
+// group, blocked reading a pipe from the orchestrator; release() writes one
+// byte and the shell execs the worker (same pid, same start time, so the
+// recorded identity stays valid). If the orchestrator dies first, the pipe
+// closes and the shell exits without running the worker. Every launch is a
+// posix_spawn: a fork would copy the orchestrator's page tables, whose size
+// grows with the study.
 #pragma once
 
 #include <sys/types.h>
@@ -52,7 +54,6 @@ class LocalExecutor : public Executor {
     double launch_grace_s = 0;  // from the progress file an earlier attempt left
     int gate = -1;  // write end of the hold pipe until released
   };
-  void start_held(const JobLaunch& job, const std::vector<char*>& argv, const std::string& log);
   std::optional<JobExit> reap_one();
   Clock::duration grace_for(const Child& c) const;
   void enforce_deadlines();

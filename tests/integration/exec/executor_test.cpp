@@ -97,6 +97,9 @@ TEST(LocalExecutor, TimeoutKillsTheWholeProcessGroup) {
 }
 
 // One job of the fake in `mode` with a timeout, run until it ends.
+// The timeouts below leave the fake's shell 1.5 s to install its SIGTERM
+// trap: at 0.3–0.5 s a loaded machine (load 8 on 2 cores) sometimes had not,
+// and the fake died of the SIGTERM instead of ignoring or answering it.
 JobExit timed_out(const std::string& test, const std::string& mode, double timeout_s, double grace_s) {
   const auto root = temp_dir(test);
   LocalExecutor ex(kFakeWorker, grace_s);
@@ -108,7 +111,7 @@ JobExit timed_out(const std::string& test, const std::string& mode, double timeo
 
 // A timeout is SIGTERM first: the worker writes its checkpoint and exits.
 TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
-  const auto e = timed_out("timeout_term", "checkpoint", 0.5, kStopGraceSeconds);
+  const auto e = timed_out("timeout_term", "checkpoint", 1.5, kStopGraceSeconds);
   EXPECT_EQ(e.code, 130);  // its own exit: the scheduler releases it (sched/outcome.h)
   EXPECT_TRUE(fs::exists(checkpoint_file(e.run_dir)));
   EXPECT_LT(e.wall_s, 5.0);  // well before the 30 s grace: it ended on SIGTERM
@@ -128,8 +131,8 @@ TEST(LocalExecutor, AResultWrittenAsTheTimeoutArrivesIsAnOrdinaryExit) {
 
 // ... and SIGKILL after the grace period when SIGTERM is ignored.
 TEST(LocalExecutor, TimeoutEndsAWorkerIgnoringSigtermAfterTheGrace) {
-  const auto e = timed_out("timeout_kill", "stubborn", 0.3, 0.5);
-  EXPECT_GE(e.wall_s, 0.8);  // timeout + grace
+  const auto e = timed_out("timeout_kill", "stubborn", 1.5, 0.5);
+  EXPECT_GE(e.wall_s, 2.0);  // timeout + grace
   EXPECT_EQ(e.code, 0);      // SIGKILLed: no exit code of its own
   EXPECT_FALSE(fs::exists(checkpoint_file(e.run_dir)));
 }
