@@ -12,6 +12,8 @@
 // SIGTERM/SIGINT: stop after the current outer iteration, write the state to
 // --checkpoint FILE (if given) and exit 130 without a result; --resume FILE
 // continues from such a checkpoint (flow/checkpoint.h).
+// A job with /case/external runs another CFD code instead (cmd_external.cpp,
+// docs/EXTERNAL.md).
 #include <malloc.h>
 #include <unistd.h>
 
@@ -30,6 +32,7 @@
 #include "commands.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
+#include "external/external_job.h"
 #include "flow/solve.h"
 #include "job/job_spec.h"
 #include "job/memory_estimate.h"
@@ -129,6 +132,7 @@ int run_solve(const SolveCommandOptions& o) {
   check_output_path("-o", o.output);
   const std::filesystem::path job_path(o.job_file);
   const nlohmann::json doc = read_json_file(job_path);
+  if (is_external_job(doc)) return run_external_solve(job_path, doc, o.output, o.progress_file);
   const JobSpec job = parse_job(doc, job_path.has_parent_path() ? job_path.parent_path() : ".");
   check_memory(job, o.max_memory);
 

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   worker_cli::add_particles_command(app, exit_code);
   worker_cli::add_verify_command(app, exit_code);
   worker_cli::add_align_command(app, exit_code);
+  worker_cli::add_collect_command(app, exit_code);
   app.add_subcommand("version", "print the version (as --version)")->callback([&version] {
     std::cout << version << '\n';
   });
