@@ -16,9 +16,11 @@ packages=(
 # `install-deps.sh test` adds what only the tests need: GoogleTest, headless Chromium
 # renders and prints the HTML report, pdftotext (poppler-utils) reads the
 # PDF; a single-node Slurm (munge, slurmctld, slurmd, started by
-# tests/integration/slurm/slurm_cluster.sh) runs the Slurm executor tests.
+# tests/integration/slurm/slurm_cluster.sh) runs the Slurm executor tests;
+# openfoam (Debian's OpenFOAM v1912, about 40 s and 500 MB) runs the external
+# solver tests (tests/integration/external), which fail without it.
 if [[ "${1:-}" == "test" ]]; then
-  packages+=(libgtest-dev chromium poppler-utils munge slurmctld slurmd slurm-client)
+  packages+=(libgtest-dev chromium poppler-utils munge slurmctld slurmd slurm-client openfoam)
 fi
 # `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
 if [[ "${1:-}" == "fuzz" ]]; then

@@ -66,7 +66,7 @@ TEST(ExternalQuantityRead, FirstFailurePatternWithTheNextLine) {
   ASSERT_TRUE(hit);
   EXPECT_EQ(hit->pattern, "FOAM FATAL");
   EXPECT_EQ(hit->line, 4);
-  EXPECT_EQ(hit->text, "--> FOAM FATAL IO ERROR:  | keyword deltaT is undefined");
+  EXPECT_EQ(hit->text, "--> FOAM FATAL IO ERROR: | keyword deltaT is undefined");
   EXPECT_FALSE(find_pattern("all good\n", {std::regex("FOAM FATAL")}, {"FOAM FATAL"}));
 }
 

@@ -51,6 +51,7 @@ bool is_blank_line(std::string_view line) {
 
 std::string cut_line(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
   return std::string(s.substr(0, 160));
 }
 
