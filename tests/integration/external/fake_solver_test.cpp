@@ -3,7 +3,8 @@
 // classification rule end to end with the reason in the result, the
 // command's own result file, template and job-document refusals, and a stop
 // (SIGTERM to the worker or to its group) that ends the command and its
-// child with exit 130 and no result. No OpenFOAM needed.
+// child with exit 130 and no result, the progress file written meanwhile.
+// No OpenFOAM needed.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -207,7 +208,9 @@ void stop_fake_run(const std::string& name, bool leader) {
   const auto dir = test_support::fresh_scratch_dir("external_fake", name);
   test_support::save_json(dir / "job.json", fake_job(kFakeTemplate, 8, 4));
   const std::string job = (dir / "job.json").string(), out = (dir / "result.json").string();
-  const char* argv[] = {kWorker.c_str(), "solve", job.c_str(), "-o", out.c_str(), "-q", nullptr};
+  const std::string progress = (dir / "progress.json").string();
+  const char* argv[] = {kWorker.c_str(), "solve", job.c_str(), "-o", out.c_str(), "--progress", progress.c_str(), "-q",
+                        nullptr};
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
   if (leader) {
@@ -222,6 +225,15 @@ void stop_fake_run(const std::string& name, bool leader) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ASSERT_TRUE(fs::exists(dir / "case" / "started"));
   const pid_t child = std::stoi(test_support::slurp(dir / "case" / "child.pid"));
+  // While it runs, the progress file says how long (every ~2 s; what
+  // `gridfree status` reads).
+  const auto progress_by = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (!fs::exists(dir / "progress.json") && std::chrono::steady_clock::now() < progress_by)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_TRUE(fs::exists(dir / "progress.json"));
+  const json p = test_support::load_json(dir / "progress.json");
+  EXPECT_GT(p["elapsed_s"].get<double>(), 1.0);
+  EXPECT_EQ(p["pid"].get<long long>(), static_cast<long long>(pid));
   const auto sent = std::chrono::steady_clock::now();
   ASSERT_EQ(leader ? ::kill(-pid, SIGTERM) : ::kill(pid, SIGTERM), 0);
   int status = 0;
