@@ -248,6 +248,10 @@ void stop_fake_run(const std::string& name, bool leader) {
   while (::kill(child, 0) == 0 && std::chrono::steady_clock::now() < gone_by)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   EXPECT_NE(::kill(child, 0), 0) << "the solver's child " << child << " outlived the stop";
+  // The stopped case's files are partial: collecting them is a failure.
+  const auto collected = test_support::run_executable("gridfree-worker", "collect " + job + " -q", dir);
+  EXPECT_EQ(collected.exit_code, 3);
+  EXPECT_NE(collected.out.find("no record of how the command ended"), std::string::npos) << collected.out;
 }
 
 TEST(ExternalFakeSolver, StopBySigtermToTheWorker) { stop_fake_run("stop_worker", false); }

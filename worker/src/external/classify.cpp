@@ -47,6 +47,11 @@ std::string signal_name(int signal) {
 }
 
 ExternalClassification classify_external(const ExternalSightings& s) {
+  // 0. No record of the command's end: it did not finish under a worker
+  // (killed with it, or still running), so its files may be partial.
+  if (!s.exit)
+    return classified("failed", "failed",
+                      "no record of how the command ended (case/.gridfree_exit): the run did not finish");
   // 1. The command could not be started (the shell's and the driver's codes).
   if (s.exit && s.exit->code == 127)
     return classified("failed", "failed", with_stderr("command not found (exit code 127)", s.stderr_tail));
@@ -100,7 +105,7 @@ ExternalClassification classify_external(const ExternalSightings& s) {
                                 " between the last two records of " + q.source + " (steady_tolerance " +
                                 classify_number(*s.steady_tolerance) + ")");
       }
-  std::string reason = s.exit ? "exit code 0" : "exit code not recorded";
+  std::string reason = "exit code 0";
   reason += ", " + std::to_string(s.quantities.size()) + " quantit" + (s.quantities.size() == 1 ? "y" : "ies") + " read";
   if (s.residual)
     reason += ", residual " + classify_number(*s.residual->last) + " ≤ " + classify_number(s.residual->tolerance);

@@ -1,6 +1,7 @@
 // The outcome of an external job from what was seen in its case folder
 // (docs/EXTERNAL.md "Classification"). Pure: the driver gathers the
 // observations, classify_external decides. Rules, first match wins:
+//   0 no record of the command's end (collect after a kill) failed
 //   1 command not found (exit 127) / not executable (126)   failed
 //   2 a failure pattern in stdout, stderr or a collected log failed
 //   3 any other non-zero exit, or death by a signal         failed
@@ -54,7 +55,7 @@ struct DriverVerdict {
 };
 
 struct ExternalSightings {
-  std::optional<ExternalExit> exit;  // empty: not known (collect without a record)
+  std::optional<ExternalExit> exit;  // empty: not recorded (the run did not finish)
   std::string stderr_tail;           // the last non-empty line of stderr, for context
   std::optional<FailureSighting> failure;
   std::optional<DriverVerdict> driver;
