@@ -33,5 +33,24 @@ TEST(Sha256, PaddingBoundaries) {
   for (const auto& [n, digest] : cases) EXPECT_EQ(sha256_hex(std::string(n, 'a')), digest) << n << " bytes";
 }
 
+// Fed in pieces: every split of messages around the block and padding
+// boundaries gives the one-shot digest (itself pinned above).
+TEST(Sha256, PiecesGiveTheOneShotDigest) {
+  std::string message;
+  for (int i = 0; i < 200; ++i) message += static_cast<char>('a' + i % 26);
+  for (std::size_t n : {0u, 1u, 55u, 56u, 63u, 64u, 65u, 119u, 120u, 128u, 200u}) {
+    const std::string m = message.substr(0, n);
+    for (std::size_t piece : {1u, 3u, 63u, 64u, 65u, 100u}) {
+      Sha256 h;
+      for (std::size_t at = 0; at < m.size(); at += piece) h.update(std::string_view(m).substr(at, piece));
+      EXPECT_EQ(h.hex_digest(), sha256_hex(m)) << n << " bytes in pieces of " << piece;
+    }
+  }
+  Sha256 million;
+  const std::string thousand(1000, 'a');
+  for (int i = 0; i < 1000; ++i) million.update(thousand);
+  EXPECT_EQ(million.hex_digest(), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
 }  // namespace
 }  // namespace gridfree

@@ -11,6 +11,9 @@
 // random packing, and old hashes must not match new beds.
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -19,6 +22,21 @@
 namespace gridfree {
 
 std::string sha256_hex(std::string_view data);
+
+// SHA-256 fed in pieces (a template folder's files without holding them all):
+// update(a); update(b); hex_digest() == sha256_hex(a + b).
+class Sha256 {
+ public:
+  Sha256();
+  void update(std::string_view data);
+  std::string hex_digest();  // once; the object is spent afterwards
+
+ private:
+  std::array<std::uint32_t, 8> state_;
+  std::array<unsigned char, 64> block_{};
+  std::size_t block_len_ = 0;
+  std::uint64_t total_ = 0;
+};
 std::string canonical_json(const nlohmann::json& j);
 std::string job_hash(const nlohmann::json& job_doc);  // uses kSolverVersion
 

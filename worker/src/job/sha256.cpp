@@ -4,6 +4,7 @@
 //   Ch(e,f,g) = (e ∧ f) ⊕ (¬e ∧ g)              Maj(a,b,c) = (a ∧ b) ⊕ (a ∧ c) ⊕ (b ∧ c)
 // Padding: a 1 bit, zeros to 448 mod 512, then the message length in bits
 // as a 64-bit big-endian integer.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -60,31 +61,52 @@ void compress(std::array<std::uint32_t, 8>& h, const unsigned char* block) {
 
 }  // namespace
 
-std::string sha256_hex(std::string_view data) {
-  std::array<std::uint32_t, 8> h = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-                                    0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
-  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
-  std::size_t full = data.size() / 64;
-  for (std::size_t i = 0; i < full; ++i) compress(h, bytes + 64 * i);
+Sha256::Sha256()
+    : state_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
 
+void Sha256::update(std::string_view data) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
+  std::size_t n = data.size();
+  total_ += n;
+  if (block_len_ > 0) {  // fill the pending block first
+    const std::size_t take = std::min(n, block_.size() - block_len_);
+    std::copy(bytes, bytes + take, block_.begin() + static_cast<std::ptrdiff_t>(block_len_));
+    block_len_ += take;
+    bytes += take;
+    n -= take;
+    if (block_len_ < block_.size()) return;
+    compress(state_, block_.data());
+    block_len_ = 0;
+  }
+  for (; n >= 64; bytes += 64, n -= 64) compress(state_, bytes);
+  std::copy(bytes, bytes + n, block_.begin());
+  block_len_ = n;
+}
+
+std::string Sha256::hex_digest() {
   // The tail, the 0x80 marker, zeros, and the bit length: one or two blocks.
   std::array<unsigned char, 128> tail{};
-  const std::size_t rest = data.size() - 64 * full;
-  for (std::size_t i = 0; i < rest; ++i) tail[i] = bytes[64 * full + i];
-  tail[rest] = 0x80;
-  const std::size_t blocks = rest < 56 ? 1 : 2;
-  const std::uint64_t bits = static_cast<std::uint64_t>(data.size()) * 8;
+  std::copy(block_.begin(), block_.begin() + static_cast<std::ptrdiff_t>(block_len_), tail.begin());
+  tail[block_len_] = 0x80;
+  const std::size_t blocks = block_len_ < 56 ? 1 : 2;
+  const std::uint64_t bits = total_ * 8;
   for (int i = 0; i < 8; ++i) tail[64 * blocks - 1 - i] = static_cast<unsigned char>(bits >> (8 * i));
-  for (std::size_t i = 0; i < blocks; ++i) compress(h, tail.data() + 64 * i);
+  for (std::size_t i = 0; i < blocks; ++i) compress(state_, tail.data() + 64 * i);
 
   std::string hex;
   hex.reserve(64);
   char buf[9];
-  for (std::uint32_t word : h) {
+  for (std::uint32_t word : state_) {
     std::snprintf(buf, sizeof buf, "%08x", static_cast<unsigned>(word));
     hex += buf;
   }
   return hex;
+}
+
+std::string sha256_hex(std::string_view data) {
+  Sha256 h;
+  h.update(data);
+  return h.hex_digest();
 }
 
 }  // namespace gridfree

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -46,12 +45,20 @@ fs::path template_entry_target(const fs::path& root, const fs::directory_entry& 
   return p;
 }
 
-std::string template_file_bytes(const fs::path& display, const fs::path& file) {
+// Feeds `file` into `hash` in 64 KiB pieces; its size must stay `size`.
+void hash_template_file(Sha256& hash, const fs::path& display, const fs::path& file, std::uintmax_t size) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error("template file " + display.string() + " cannot be read");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<char> buf(1 << 16);
+  std::uintmax_t seen = 0;
+  while (in) {
+    in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    hash.update(std::string_view(buf.data(), got));
+    seen += got;
+  }
   if (in.bad()) throw std::runtime_error("template file " + display.string() + " cannot be read");
-  return bytes;
+  if (seen != size) throw std::runtime_error("template file " + display.string() + " changed while it was read");
 }
 
 }  // namespace
@@ -74,19 +81,22 @@ std::string template_sha256(const fs::path& dir) {
   if (ec) throw std::runtime_error("template folder " + dir.string() + ": " + ec.message());
   std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 
-  std::string message;
+  Sha256 hash;
   for (const auto& [rel, target] : files) {
-    const std::string bytes = template_file_bytes(root / rel, target);
+    std::error_code size_ec;
+    const std::uintmax_t size = fs::file_size(target, size_ec);
+    if (size_ec) throw std::runtime_error("template file " + (root / rel).string() + " cannot be read");
     const bool executable = (fs::status(target).permissions() & fs::perms::owner_exec) != fs::perms::none;
-    message += rel;
-    message += '\0';
-    message += executable ? "x" : "-";
-    message += '\0';
-    message += std::to_string(bytes.size());
-    message += '\0';
-    message += bytes;
+    std::string header = rel;
+    header += '\0';
+    header += executable ? "x" : "-";
+    header += '\0';
+    header += std::to_string(size);
+    header += '\0';
+    hash.update(header);
+    hash_template_file(hash, root / rel, target, size);
   }
-  return sha256_hex(message);
+  return hash.hex_digest();
 }
 
 }  // namespace gridfree
