@@ -81,6 +81,10 @@ int run_collect(const CollectCommandOptions& o) {
 
 int run_external_solve(const std::filesystem::path& job_path, const nlohmann::json& doc, const std::string& output,
                        const std::string& progress_file) {
+  // From here on a stop request is a flag (a SIGTERM while the template is
+  // copied must not kill the worker half-way; the driver checks the flag
+  // before it starts the command).
+  install_stop_handlers();
   const std::filesystem::path run_dir = external_run_dir(job_path);
   const ExternalJob job = parse_external_job(doc, run_dir);
   ExternalRunOptions options;
@@ -104,7 +108,6 @@ int run_external_solve(const std::filesystem::path& job_path, const nlohmann::js
   };
   spdlog::info("running {} ({}) in {}", job.name.empty() ? "the external case" : job.name,
                job.command.empty() ? "" : job.command[0], (run_dir / kCaseFolder).string());
-  install_stop_handlers();
   const ExternalRunEnd end = run_external_job(job, options);
   if (end.stopped) {
     spdlog::warn("stopped: the command was sent SIGTERM; no result written");

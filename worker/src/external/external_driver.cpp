@@ -235,6 +235,10 @@ ExternalRunEnd run_external_job(const ExternalJob& job, const ExternalRunOptions
   }
   prepare_external_case(job, options.run_dir);
   const fs::path case_dir = options.run_dir / kCaseFolder;
+  if (options.stop_requested && options.stop_requested()) {  // asked to stop while copying
+    end.stopped = true;
+    return end;
+  }
   CommandLaunch launch{job.setup, job.command, case_dir, case_dir / kCaseStdout, case_dir / kCaseStderr};
   const CommandEnd ran =
       run_command_watched(launch, CommandWatch{options.stop_requested, options.on_tick, options.stop_grace_s});

@@ -69,7 +69,13 @@ CommandEnd run_command_watched(const CommandLaunch& launch, const CommandWatch& 
   const std::string cwd = launch.cwd.string();
 
   const int out_fd = open_log(launch.stdout_file);
-  const int err_fd = open_log(launch.stderr_file);
+  int err_fd = -1;
+  try {
+    err_fd = open_log(launch.stderr_file);
+  } catch (...) {
+    ::close(out_fd);
+    throw;
+  }
   const int null_fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
   // Leading our own group (the orchestrator's setpgid): the command stays in it.
   const bool own_group = ::getpgrp() != ::getpid();
