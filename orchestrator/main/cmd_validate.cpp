@@ -56,7 +56,8 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     const ExpandedStudy ex = expand(study);
     warn_close_grids(neighbour_warnings(grid_listing(study)));
     warn_close_grids(grid_warnings(study, ex));
-    std::cout << "ok: " << ex.series.size() << " series, " << ex.jobs.size() << " jobs\n";
+    std::cout << "ok: " << ex.series.size() << " series, " << (study.external() ? distinct_job_count(ex) : ex.jobs.size())
+              << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });
 }

@@ -4,6 +4,7 @@
 #include "study/format_number.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace gridfree {
@@ -17,6 +18,20 @@ std::vector<GridRow> grid_listing(const Study& study) {
   std::vector<GridRow> rows;
   const bool requested = !study.grid_delta_star.empty();
   for (const auto& c : study.cases) {
+    if (c.external) {  // external cases: h and cells from their expressions (study/external_case.h)
+      for (std::size_t i = 0; i < external_grid_count(study.grid_variables); ++i) {
+        const ExternalGrid g = external_grid(*c.external, study.grid_variables, i);
+        GridRow r;
+        r.case_name = c.name;
+        r.index = i;
+        r.pointer = "/grids/variables level " + std::to_string(i);
+        r.actual = g.h;
+        r.cell_count = g.cells ? static_cast<std::uint64_t>(std::max(1.0, std::round(*g.cells))) : 0;
+        r.cells = {static_cast<int>(std::min<std::uint64_t>(r.cell_count, 2000000000)), 1, 1};
+        rows.push_back(r);
+      }
+      continue;
+    }
     const auto grids = grids_for_case(study, c);
     for (std::size_t i = 0; i < grids.size(); ++i) {
       GridRow r;

@@ -7,6 +7,7 @@
 namespace gridfree {
 
 std::string SeriesKey::label() const {
+  if (external()) return case_name + " " + quantity;
   char fwhm[32];
   std::snprintf(fwhm, sizeof fwhm, "%g", fwhm_dp);
   std::string out = case_name + " " + convection + " fwhm" + fwhm + " " + drag;

@@ -18,6 +18,7 @@
 
 #include "job/job_spec.h"
 #include "study/adaptive_grids.h"
+#include "study/external_case.h"
 #include "study/study_ensembles.h"
 
 namespace gridfree {
@@ -29,9 +30,11 @@ struct SeriesKey {
   double fwhm_dp = 6;
   std::string drag = "bvk";
   std::string deposition = "diffusion";  // "diffusion" | "centroid" | a preset "fm18" | "mfix" | a transfer level's name
+  std::string quantity{};                // an external case's quantity (study/external_case.h); "" for dp*
 
   auto operator<=>(const SeriesKey&) const = default;
-  std::string label() const;  // "PC1 superbee fwhm6 bvk" (+ " centroid")
+  std::string label() const;  // "PC1 superbee fwhm6 bvk" (+ " centroid"); external: "cavity kinetic_energy"
+  bool external() const { return !quantity.empty(); }
 };
 
 // The expanded transfer of a series (study_transfer.h): series table columns.
@@ -49,7 +52,8 @@ struct StudyFactors {
 struct StudyCase {
   std::string name;
   nlohmann::json doc;  // the case object, "name" set, particle file path made absolute
-  CaseSpec spec;
+  CaseSpec spec;                        // physical cases
+  std::optional<ExternalCase> external;  // external cases (then spec is unused)
 };
 
 struct ExtrapolationSettings {
@@ -83,12 +87,14 @@ struct Study {
   std::vector<double> grid_delta_star;            // grids: {"delta_star": [...]}
   std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}
   std::optional<AdaptiveGrids> adaptive_grids;    // or grids as a target (grid_delta_star = its ladder)
+  GridVariables grid_variables;                   // or grids: {"variables": {...}} (external cases)
   nlohmann::json numerics = nlohmann::json::object();  // merged into every job
   ExtrapolationSettings extrapolation;
   std::optional<AlignmentOption> alignment;  // off unless the study asks
   Ensembles ensembles;              // name → instance cases (study_ensembles.h)
 
   const StudyCase* find_case(const std::string& name) const;
+  bool external() const { return !cases.empty() && cases.front().external.has_value(); }
   std::string design_description() const;  // "factorial" or "one_at_a_time (baseline ...)"
 };
 
@@ -96,7 +102,7 @@ struct StudyJob {
   std::size_t series = 0;          // index into ExpandedStudy::series
   std::size_t grid = 0;            // index of the grid in the study's list
   std::array<int, 3> cells{};
-  double delta_star = 0;           // (V/N)^(1/3)/d of this grid, actual
+  double delta_star = 0;           // (V/N)^(1/3)/d of this grid, actual; an external case's h
   std::optional<double> delta_star_nominal;  // as requested in grids.delta_star (none for cells)
   nlohmann::json doc;              // the job document
   std::string hash;                // job_hash(doc)
@@ -138,6 +144,10 @@ nlohmann::json make_job_document(const Study& study, const SeriesKey& key,
 
 // Series and jobs of the study, hashed.
 ExpandedStudy expand(const Study& study);
+
+// The study's distinct jobs (an external case's job is in each of its
+// quantities' series, so `jobs` lists it once per quantity).
+std::size_t distinct_job_count(const ExpandedStudy& expanded);
 
 // Δ* = (L*x L*y L*z / N)^(1/3) for a domain in particle diameters.
 double delta_star_of(const std::array<double, 3>& domain_dp, const std::array<int, 3>& cells);

@@ -7,7 +7,9 @@
 // Grids: cells = round(L*/Δ*) per direction (cells_for_delta_star) per case,
 // or the explicit cells. Each job document is docs/INTERFACE.md §2's job with the
 // study's numerics merged in, identified by job_hash.
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "grid/grid.h"
@@ -25,6 +27,16 @@ std::vector<SeriesKey> design_series(const Study& s) {
     if (seen.insert(k).second) out.push_back(k);
   };
   const auto& f = s.factors;
+  if (s.external()) {  // one series per (case × quantity)
+    for (const auto& c : s.cases)
+      if (c.external)
+        for (const auto& q : c.external->quantities) {
+          SeriesKey k{c.name, "", 0, "", ""};
+          k.quantity = q.name;
+          add(k);
+        }
+    return out;
+  }
   if (s.baseline) {
     const SeriesKey& b = *s.baseline;
     add(b);
@@ -82,9 +94,52 @@ nlohmann::json make_job_document(const Study& s, const SeriesKey& key, const std
           {"numerics", numerics}};
 }
 
+namespace {
+
+// External cases: one job per (case × grid), shared by the case's series
+// (one per quantity); h from the case's expression.
+void expand_external(const Study& s, ExpandedStudy& out) {
+  std::map<std::string, std::vector<StudyJob>> jobs_of_case;
+  for (const auto& c : s.cases) {
+    if (!c.external) continue;
+    auto& jobs = jobs_of_case[c.name];
+    for (std::size_t g = 0; g < external_grid_count(s.grid_variables); ++g) {
+      const ExternalGrid grid = external_grid(*c.external, s.grid_variables, g);
+      StudyJob job;
+      job.grid = g;
+      const double cells = grid.cells ? std::max(1.0, std::round(*grid.cells)) : 1.0;
+      job.cells = {static_cast<int>(std::min(cells, 2.0e9)), 1, 1};
+      job.delta_star = grid.h;
+      job.delta_star_nominal = grid.h;
+      job.doc = external_job_document(*c.external, c.name, grid, g);
+      job.hash = job_hash(job.doc);
+      jobs.push_back(std::move(job));
+    }
+  }
+  for (std::size_t si = 0; si < out.series.size(); ++si) {
+    out.transfer.emplace_back();
+    for (StudyJob job : jobs_of_case[out.series[si].case_name]) {
+      job.series = si;
+      out.jobs.push_back(std::move(job));
+    }
+  }
+}
+
+}  // namespace
+
+std::size_t distinct_job_count(const ExpandedStudy& ex) {
+  std::set<std::string> hashes;
+  for (const auto& j : ex.jobs) hashes.insert(j.hash);
+  return hashes.size();
+}
+
 ExpandedStudy expand(const Study& s) {
   ExpandedStudy out;
   out.series = design_series(s);
+  if (s.external()) {
+    expand_external(s, out);
+    return out;
+  }
   for (std::size_t si = 0; si < out.series.size(); ++si) {
     const auto& key = out.series[si];
     const StudyCase* c = s.find_case(key.case_name);

@@ -229,6 +229,51 @@ void parse_grids(const json& doc, Study& s, ProblemList& problems) {
     if ((s.adaptive_grids = parse_adaptive_grids(*g, problems))) s.grid_delta_star = adaptive_ladder(*s.adaptive_grids);
     return;
   }
+  if (g->contains("variables")) {  // external cases (study/external_case.h)
+    const json& v = (*g)["variables"];
+    if (!v.is_object() || v.empty()) {
+      problems.add_once("/grids/variables", "must name at least one grid variable with its values");
+      return;
+    }
+    std::size_t length = 0;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      const std::string at = child_pointer("/grids/variables", it.key());
+      const bool name_ok = !it.key().empty() && (std::isalpha(static_cast<unsigned char>(it.key()[0])) || it.key()[0] == '_') &&
+                           std::all_of(it.key().begin(), it.key().end(), [](char ch) {
+                             return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+                           });
+      if (!name_ok) {
+        problems.add_once(at, "a variable name is a letter or '_' followed by letters, digits or '_'");
+        continue;
+      }
+      if (!it->is_array() || it->empty()) {
+        problems.add_once(at, "must be a non-empty array of numbers, one per grid");
+        continue;
+      }
+      std::vector<double> values;
+      for (std::size_t i = 0; i < it->size(); ++i) {
+        if (!is_number((*it)[i]) || !std::isfinite((*it)[i].get<double>())) {
+          problems.add_once(at + "/" + std::to_string(i), "must be a finite number");
+          continue;
+        }
+        values.push_back((*it)[i].get<double>());
+      }
+      if (values.size() == it->size()) s.grid_variables[it.key()] = std::move(values);
+      length = std::max(length, it->size());
+    }
+    std::string lengths;
+    bool uneven = false;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      lengths += (lengths.empty() ? "" : ", ") + it.key() + " " + std::to_string(it->is_array() ? it->size() : 0);
+      uneven = uneven || !it->is_array() || it->size() != length;
+    }
+    if (uneven) {
+      problems.add_once("/grids/variables", "the grid variables have different lengths (" + lengths +
+                                                "); each needs one value per grid");
+      s.grid_variables.clear();
+    }
+    return;
+  }
   const bool ds = g->contains("delta_star"), cs = g->contains("cells");
   if (ds == cs) {
     problems.add_once("/grids", "give exactly one of delta_star and cells");
@@ -337,6 +382,10 @@ void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& 
     c.name = it.key();
     c.doc = *it;
     if (!c.doc.contains("name")) c.doc["name"] = c.name;
+    if (c.doc.contains("external")) {  // read after the grids (parse_external_cases)
+      s.cases.push_back(std::move(c));
+      continue;
+    }
     ProblemList case_problems;
     try {
       c.spec = parse_case(c.doc, at, base_dir, case_problems);
@@ -353,6 +402,35 @@ void parse_cases(const json& doc, const std::filesystem::path& base_dir, Study& 
       if (f.is_relative()) c.doc["particles"]["file"] = std::filesystem::absolute(base_dir / f).lexically_normal().string();
     }
     s.cases.push_back(std::move(c));
+  }
+}
+
+// External cases (study/external_case.h): all cases of the study or none,
+// grids given as variables, none of the physical study's sections.
+void parse_external_cases(const json& doc, const std::filesystem::path& base_dir, Study& s, ProblemList& problems,
+                          bool cases_sound) {
+  std::size_t external = 0;
+  for (const auto& c : s.cases) external += c.doc.contains("external") ? 1 : 0;
+  const bool variables = doc.contains("grids") && doc["grids"].is_object() && doc["grids"].contains("variables");
+  if (external == 0) {
+    if (variables)
+      problems.add_once("/grids/variables", "grid variables are for external cases; this study's cases are physical");
+    return;
+  }
+  if (external != s.cases.size()) {
+    problems.add_once("/cases", "a study's cases are either all external or all physical; put the external ones "
+                                "in a study of their own");
+    return;
+  }
+  if (!variables) problems.add_once("/grids", "external cases take their grids as {\"variables\": {\"N\": [...]}}");
+  for (const char* key : {"factors", "design", "alignment", "ensembles", "numerics"})
+    if (doc.contains(key))
+      problems.add_once(std::string("/") + key, "does not apply to external cases (their settings are the template's)");
+  if (!cases_sound || (variables && s.grid_variables.empty())) return;  // their problems are reported
+  if (external_grid_count(s.grid_variables) < 1) return;
+  for (auto& c : s.cases) {
+    const std::string at = child_pointer("/cases", c.name) + "/external";
+    c.external = parse_external_case(c.doc["external"], at, base_dir, s.grid_variables, problems);
   }
 }
 
@@ -533,11 +611,16 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   check_slurm_block(doc, problems);
   check_deposition_levels(s, problems);
   parse_grids(doc, s, problems);
+  parse_external_cases(doc, base_dir, s, problems, !problems_under(problems, {"/cases", "/grids"}));
   parse_alignment(doc, s, problems);  // study_alignment.cpp
   parse_extrapolation(doc, s, problems);
   parse_ensembles(doc, s, problems);
   // The checks of whole grids and jobs need sound parts; each runs when the
   // parts it reads are, so independent problems are reported together.
+  if (std::any_of(s.cases.begin(), s.cases.end(), [](const StudyCase& c) { return c.doc.contains("external"); })) {
+    if (!problems.empty()) throw InputError(without_follow_ons(problems.problems()));
+    return s;  // external cases: the checks below read physical cases
+  }
   if (!problems_under(problems, {"/cases", "/factors"})) check_filter_widths(doc, s, problems);
   if (!problems_under(problems, {"/cases", "/grids"})) check_grids(s, problems);
   if (!problems_under(problems, {"/cases", "/grids", "/factors", "/design", "/numerics", "/ensembles"})) check_jobs(s, problems);

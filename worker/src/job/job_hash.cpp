@@ -63,6 +63,15 @@ void append_canonical(const nlohmann::json& j, std::string& out) {
   }
 }
 
+// case.external of an external job, or nullptr.
+const nlohmann::json* external_part(const nlohmann::json& job_doc) {
+  if (!job_doc.is_object()) return nullptr;
+  const auto c = job_doc.find("case");
+  if (c == job_doc.end() || !c->is_object()) return nullptr;
+  const auto e = c->find("external");
+  return e != c->end() && e->is_object() ? &*e : nullptr;
+}
+
 }  // namespace
 
 std::string canonical_json(const nlohmann::json& j) {
@@ -72,6 +81,15 @@ std::string canonical_json(const nlohmann::json& j) {
 }
 
 std::string job_hash(const nlohmann::json& job_doc) {
+  if (external_part(job_doc) != nullptr) {
+    // An external job (docs/INTERFACE.md §2): where the template lies and
+    // how the quantities are read are not what the job computes.
+    nlohmann::json identity = job_doc;
+    auto& e = identity["case"]["external"];
+    e.erase("template_dir");
+    e.erase("collect");
+    return sha256_hex(canonical_json(identity) + "\n" + kSolverVersion);
+  }
   // A job that leaves a default out and the same job with the default
   // written (or a preset and its explicit spelling) are one job.
   return sha256_hex(canonical_json(normalised_job(job_doc)) + "\n" + kSolverVersion);

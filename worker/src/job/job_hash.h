@@ -9,6 +9,10 @@
 // An sscp_like generator without "emulsion" is normalised with "emulsion":
 // "random" (docs/PARTICLES.md): the default changed from the lattice to the
 // random packing, and old hashes must not match new beds.
+// An external job (case.external, docs/INTERFACE.md §2) is hashed as
+// written without case.external.template_dir (a moved study keeps its
+// jobs) and case.external.collect (re-reading the quantities is no new
+// job); template_sha256, variables, setup, command and version are in it.
 #pragma once
 
 #include <array>
