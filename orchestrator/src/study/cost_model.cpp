@@ -58,6 +58,9 @@ std::string cost_similarity_key(const nlohmann::json& job_doc) {
   auto c = case_of(job_doc);
   c.erase("name");
   c.erase("particles");
+  // An external job: the same case (template, command, version) on any grid.
+  if (c.contains("external") && c["external"].is_object())
+    for (const char* key : {"variables", "template_dir", "collect"}) c["external"].erase(key);
   const auto drag = job_doc.is_object() && job_doc.contains("/numerics/drag"_json_pointer) ? job_doc.at("/numerics/drag"_json_pointer)
                                                                    : nlohmann::json("bvk");
   return nlohmann::json{{"case", c}, {"drag", drag}}.dump();

@@ -2,6 +2,7 @@
 #include "study/study_plan.h"
 
 #include "job/memory_estimate.h"
+#include "study/external_plan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +48,7 @@ static void add_job(PlanRow& row, const std::array<int, 3>& cells, const CostRat
 
 Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
                const CostHistory& history) {
-  (void)study;
+  if (study.external()) return make_external_plan(study, expanded, workers, cores, history);
   Plan plan;
   plan.workers = std::max(1, workers);
   const int threads = std::max(1, cores / plan.workers);
@@ -109,6 +110,7 @@ nlohmann::json plan_to_json(const Plan& plan) {
 }
 
 std::string human_bytes(double bytes) {
+  if (std::isnan(bytes)) return "unknown";  // an external job without a cost figure
   const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB"};
   int u = 0;
   while (bytes >= 1024 && u < 4) {
@@ -121,6 +123,7 @@ std::string human_bytes(double bytes) {
 }
 
 std::string human_seconds(double s) {
+  if (std::isnan(s)) return "unknown";  // an external job without a cost figure
   char buf[32];
   if (s < 120)
     std::snprintf(buf, sizeof buf, "%.0f s", s);
@@ -152,7 +155,7 @@ std::string plan_to_table(const Plan& plan) {
   for (const auto& r : plan.rows) {
     std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s  %s\n", r.series.c_str(), r.grids,
                   static_cast<unsigned long long>(r.cells), human_bytes(r.memory_bytes).c_str(),
-                  human_seconds(r.seconds).c_str(), cost_column(r).c_str());
+                  human_seconds(r.seconds).c_str(), plan.external ? r.cost_basis.c_str() : cost_column(r).c_str());
     out += line;
     if (std::none_of(bases.begin(), bases.end(), [&](const auto& x) { return x.second == r.cost_basis; }))
       bases.emplace_back(r.series, r.cost_basis);
@@ -161,6 +164,12 @@ std::string plan_to_table(const Plan& plan) {
                 static_cast<unsigned long long>(plan.cells),
                 human_bytes(plan.max_memory_bytes).c_str(), human_seconds(plan.seconds).c_str());
   out += line;
+  if (plan.external) {
+    out += "estimated wall time with " + std::to_string(plan.workers) + " workers: " +
+           human_seconds(plan.wall_seconds) +
+           " (external code: declared cost per cell, or measured history of the case; see the last column)\n";
+    return out;
+  }
   std::snprintf(line, sizeof line,
                 "estimated wall time with %d workers x %d thread(s): %s (model: %.0f B/cell; time = cost ratio x "
                 "iterations x cells x %.1e s, iterations %s)\n",

@@ -67,6 +67,7 @@ struct Plan {
   int workers = 1;
   int threads_per_worker = 1;    // cores / workers, at least 1 (each worker's --threads)
   double wall_seconds = 0;       // seconds / workers (perfect packing, a lower bound)
+  bool external = false;         // an external study's (study/external_plan.h): NaN = unknown
 };
 
 // `history`: finished jobs of a database (sched/cost_history.h), empty for
