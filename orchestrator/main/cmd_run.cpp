@@ -18,7 +18,9 @@
 #include "core/input_error.h"
 #include "job/memory_estimate.h"
 #include "sched/adopt.h"
+#include "exec/worker_path.h"
 #include "sched/memory_budget.h"
+#include "sched/recollect.h"
 #include "sched/series_finish.h"
 #include "sched/stop_signal.h"
 
@@ -54,9 +56,13 @@ constexpr const char* kMemoryBudgetHelp =
 
 SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy& ex, bool replace) {
   const SubmitResult r = store.submit(study, ex, replace);
-  if (r.replaced) {
+  if (r.replaced && r.jobs_changed)
+    spdlog::info("'{}': its template or code version changed since it was stored: its jobs were replaced; {} job(s) "
+                 "no study needs any more removed", study.name, r.jobs_removed.size());
+  else if (r.replaced)
     spdlog::info("'{}': the stored definition was replaced; {} job(s) no study needs any more removed", study.name,
                  r.jobs_removed.size());
+  if (r.replaced) {
     remove_run_folders(store.file(), r.jobs_removed);
   }
   if (r.created)
@@ -85,6 +91,12 @@ int run_study(const RunOptions& ro) {
   // 2. Submit (or resume).
   Store store(ro.db, true);
   const SubmitResult sub = submit_study(store, study, ex, ro.replace);
+  if (study.external()) {  // finished jobs whose collect section changed: read again, not rerun
+    const RecollectSummary rc = recollect_study(store, sub.study_id, default_worker_path(), options.runs_root);
+    if (rc.recollected > 0) spdlog::info("re-collected {} finished job(s) with the study's collect section", rc.recollected);
+    if (rc.failed > 0)
+      spdlog::warn("{} job(s) could not be re-collected (their previous values stay): {}", rc.failed, rc.first_error);
+  }
   const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
   recover_stale_jobs(store);
   // 3. Work the study until it is done.

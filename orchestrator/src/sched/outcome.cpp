@@ -49,13 +49,22 @@ ResultRow read_result_file(const std::filesystem::path& file) {
     const double v = j["srq"]["dp_star"].get<double>();
     if (std::isfinite(v)) r.dp_star = v;
   }
-  if (r.status == "converged" && !r.dp_star)
+  // An external job's result (docs/EXTERNAL.md) carries its quantities
+  // instead of dp*; its series read them (store_query.cpp).
+  const bool external = j.contains("quantities") && j["quantities"].is_object();
+  if (external && r.status == "converged") {
+    bool finite = false;
+    for (const auto& [name, v] : j["quantities"].items()) finite = finite || (v.is_number() && std::isfinite(v.get<double>()));
+    if (!finite) throw std::runtime_error("converged result without a finite quantity");
+  }
+  if (r.status == "converged" && !r.dp_star && !external)
     throw std::runtime_error("converged result without a finite srq.dp_star");
   if (j.contains("grid") && j["grid"].is_object()) {
     const auto& g = j["grid"];
+    if (external) r.delta_star = number_at(g, "h");
     if (g.contains("cells") && g["cells"].is_array() && g["cells"].size() == 3)
       for (int a = 0; a < 3; ++a) r.cells[a] = g["cells"][a].is_number_integer() ? g["cells"][a].get<int>() : 0;
-    r.delta_star = number_at(g, "delta_star");
+    if (!external) r.delta_star = number_at(g, "delta_star");
   }
   r.iterations = static_cast<int>(number_at(j, "iterations"));
   r.wall_s = number_at(j, "timing", "wall_s");

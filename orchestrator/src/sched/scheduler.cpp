@@ -13,6 +13,7 @@
 #include "exec/local_executor.h"
 #include "job/memory_estimate.h"
 #include "sched/budget_claim.h"
+#include "sched/external_result.h"
 #include "sched/job_timeout.h"
 #include "study/cost_model.h"
 #include "sched/outcome.h"
@@ -52,6 +53,11 @@ std::string job_label(Store& store, const ClaimedJob& job) {
     SeriesKey k{st.as_text(0), st.as_text(1), st.as_double(2), st.as_text(3), st.as_text(4)};
     label = k.label();
     if (st.as_int(5) != 0) label += " alignment";  // a variant of the alignment check
+  }
+  if (is_external_job(job.spec)) {  // one job serves every quantity: the case and its grid
+    char h[64];
+    std::snprintf(h, sizeof h, " h=%g", job.spec.value("/numerics/grid/h"_json_pointer, 0.0));
+    return job.spec["case"].value("name", label) + h;
   }
   char cells[64];
   std::snprintf(cells, sizeof cells, " %dx%dx%d", job.cells[0], job.cells[1], job.cells[2]);
@@ -115,6 +121,7 @@ ProgressTally progress_tally(Store& store, const SchedulerOptions& o) {
 struct StudyFacts {
   std::optional<double> timeout_s;  // the definition's timeout_s
   bool adaptive = false;            // adaptive grids (study/adaptive_grids.h)
+  std::map<std::string, double> external_cpu_s_per_cell;  // external cases' declared cost (sched/external_result.h)
 };
 
 class StudyFactsCache {
@@ -128,6 +135,7 @@ class StudyFactsCache {
     if (d.is_object())
       if (const auto t = d.find("timeout_s"); t != d.end() && t->is_number()) f.timeout_s = t->get<double>();
     f.adaptive = adaptive_grids_of(d).has_value();
+    f.external_cpu_s_per_cell = declared_cpu_s_per_cell(d);
     return facts_.emplace(study_id, f).first->second;
   }
 
@@ -141,6 +149,7 @@ class StudyFactsCache {
 double job_timeout_s(const SchedulerOptions& o, const StudyFacts& facts, const ClaimedJob& job) {
   if (o.timeout_s >= 0) return o.timeout_s;
   if (facts.timeout_s) return *facts.timeout_s;
+  if (is_external_job(job.spec)) return external_job_timeout_s(job, facts.external_cpu_s_per_cell);
   return default_job_timeout_s(job.cells, o.threads_per_job, apriori_cost_ratio(job.spec, job.cells).ratio);
 }
 
@@ -291,15 +300,14 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     std::string what = f.label + ": ";
     bool failed = true;  // logged at warn unless converged or released
     if (out.kind == OutcomeKind::kFinal) {
+      note_external_result(f.job, out.row);  // external jobs: cells, what the quantities were read with
       if (store.record_result(f.job.job_id, o.owner, out.row)) remove_checkpoint(exit->run_dir);
       ++sum.finished;
       tally.job_finished(out.row.status == "converged", out.row.wall_s);
       if (out.row.status == "converged") {
         ++sum.converged;
         failed = false;
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "converged dp* = %.6g (%.1f s)", *out.row.dp_star, out.row.wall_s);
-        what += buf;
+        what += converged_message(out.row);
       } else {
         ++sum.failed;
         what += out.row.status + ": " + out.row.reason;

@@ -2,7 +2,8 @@
 // state; 4: series verdicts; 5: series transfer columns; 6: alignment check;
 // 7: adaptive series; 8: ensembles; 9: indexes for
 // the scheduler at ensemble scale; 10: the series' coverage self-check;
-// 11: job hashes of the normalised job document). Status words (docs/INTERFACE.md §5):
+// 11: job hashes of the normalised job document; 12: series.quantity for
+// external cases). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -345,7 +346,8 @@ void migrate(Database& db, int target) {
   if (v < 9 && target >= 9) db.exec(kV9ScaleIndexes);
   if (v < 10 && target >= 10) db.exec(kV10Coverage);
   if (v < 11 && target >= 11) migrate_job_hashes(db);  // defaults filled in (schema_job_hashes.cpp)
-  if ((v < 5 && target >= 5) || (v < 11 && target >= 11)) {
+  if (v < 12 && target >= 12) migrate_series_quantity(db);  // external quantities (schema_quantity.cpp)
+  if ((v < 5 && target >= 5) || (v < 11 && target >= 11) || (v < 12 && target >= 12)) {
     auto fk = db.prepare("PRAGMA foreign_key_check");
     if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);
   }

@@ -6,7 +6,7 @@
 
 namespace gridfree {
 
-inline constexpr int kSchemaVersion = 11;
+inline constexpr int kSchemaVersion = 12;
 
 // Brings the database up to kSchemaVersion (WAL mode, tables, view) in one
 // transaction per step. Refuses a database newer than this program.

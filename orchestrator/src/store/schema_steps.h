@@ -17,4 +17,8 @@ void migrate_alignment(Database& db);
 // (defaults filled in); jobs that become equal merged into one.
 void migrate_job_hashes(Database& db);
 
+// Step 12 (schema_quantity.cpp): series.quantity (an external case's
+// quantity, '' for dp*) in the series' UNIQUE key; the table rebuilt.
+void migrate_series_quantity(Database& db);
+
 }  // namespace gridfree

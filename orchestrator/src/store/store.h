@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@ struct SubmitResult {
   std::size_t jobs_new = 0;      // inserted by this submit
   std::size_t jobs_reused = 0;   // already done in the store (any study)
   bool replaced = false;         // a different stored definition was replaced (--replace)
+  bool jobs_changed = false;     // replaced because an external study's jobs changed (template, version)
   bool uncancelled = false;      // the stored study was cancelled and is queued again
   std::size_t jobs_requeued = 0; // its cancelled jobs queued again
   std::vector<std::string> jobs_removed;  // hashes of jobs no study needs any more
@@ -119,7 +121,19 @@ class Store {
   // `replace`: then the stored study is removed as by delete_study (in the
   // same transaction) and the new one inserted; jobs both need, finished
   // or not, are kept and linked again (job_hash).
+  // An external study whose file is unchanged but whose jobs are not (its
+  // template or code version changed) is replaced without `replace`.
   SubmitResult submit(const Study& study, const ExpandedStudy& expanded, bool replace = false);
+  // The hashes of the jobs a stored study links.
+  std::set<std::string> stored_job_hashes(long long study_id);
+
+  // Re-collection (store_recollect.cpp): a study's finished external jobs
+  // whose result was collected with another collect section than their job
+  // document's (the study's collect changed), with their job documents.
+  std::vector<ClaimedJob> jobs_to_recollect(long long study_id);
+  // Replaces what was read of a finished job (status, quantities, reason);
+  // its run time and memory stay. The job becomes done or failed by it.
+  void record_recollected(long long job_id, const ResultRow& r);
 
   // Removes a study: its series, extrapolations, uncertainties, job links
   // and events; then every job that no study links any more, with its

@@ -17,12 +17,13 @@ SeriesInfo read_series(const Statement& st) {
   s.verdict = st.as_text(8);
   s.verdict_reasons = st.as_text(9);
   s.coverage_json = st.as_text(10);
+  s.key.quantity = st.as_text(11);
   return s;
 }
 
 constexpr const char* kSeriesColumns =
     "SELECT id, study_id, case_name, convection, fwhm_dp, drag, deposition, status, COALESCE(verdict, ''), "
-    "COALESCE(verdict_reasons, ''), COALESCE(coverage_json, '') FROM series ";
+    "COALESCE(verdict_reasons, ''), COALESCE(coverage_json, ''), quantity FROM series ";
 
 }  // namespace
 
@@ -69,10 +70,14 @@ std::vector<SeriesPoint> Store::series_points(long long series_id) {
   std::vector<SeriesPoint> out;
   auto st = db_.prepare(
       "SELECT j.id, j.job_hash, j.status, COALESCE(r.status, ''), COALESCE(r.reason, j.error, ''), "
-      "COALESCE(r.delta_star, j.delta_star), j.nx, j.ny, j.nz, r.dp_star, COALESCE(r.iterations, 0), "
+      "COALESCE(r.delta_star, j.delta_star), j.nx, j.ny, j.nz, "
+      // An external series reads its quantity from the result (docs/EXTERNAL.md).
+      "CASE WHEN se.quantity = '' THEN r.dp_star WHEN json_valid(r.result_json) THEN "
+      " json_extract(r.result_json, '$.quantities.' || se.quantity) END, COALESCE(r.iterations, 0), "
       "COALESCE(r.wall_s, 0), COALESCE(r.cpu_s, 0), COALESCE(r.peak_rss_mb, 0), "
       "COALESCE(CASE WHEN json_valid(r.result_json) THEN json_extract(r.result_json, '$.outcome') END, '') "
-      "FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id LEFT JOIN results r ON r.job_id = j.id "
+      "FROM study_jobs sj JOIN series se ON se.id = sj.series_id JOIN jobs j ON j.id = sj.job_id "
+      "LEFT JOIN results r ON r.job_id = j.id "
       "WHERE sj.series_id = ? AND sj.alignment_only = 0 ORDER BY sj.grid_index");
   st.bind_all(series_id);
   while (st.step()) {

@@ -1,4 +1,6 @@
 // Store: opening, submitting a study (one transaction), cancelling.
+#include <set>
+
 #include "core/input_error.h"
 #include "store/schema.h"
 #include "store/store_ensembles.h"
@@ -6,6 +8,16 @@
 #include "store/store_alignment.h"
 
 namespace gridfree {
+namespace {
+
+std::set<std::string> expanded_job_hashes(const ExpandedStudy& expanded) {
+  std::set<std::string> out;
+  for (const auto& j : expanded.jobs) out.insert(j.hash);
+  for (const auto& a : expanded.alignment) out.insert(a.hash);
+  return out;
+}
+
+}  // namespace
 
 Store::Store(const std::filesystem::path& file, bool create) : file_(file), db_(file, create) {
   migrate(db_);
@@ -25,11 +37,20 @@ nlohmann::json Store::study_definition(long long id) {
   return nlohmann::json::parse(st.as_text(0));
 }
 
+std::set<std::string> Store::stored_job_hashes(long long study_id) {
+  std::set<std::string> out;
+  auto st = db_.prepare("SELECT j.job_hash FROM study_jobs sj JOIN jobs j ON j.id = sj.job_id WHERE sj.study_id = ?");
+  st.bind_all(study_id);
+  while (st.step()) out.insert(st.as_text(0));
+  return out;
+}
+
 SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bool replace) {
   // Stored as JSON text; compared as JSON values (key order, 20 vs 20.0 do not matter).
   const std::string definition = study.definition.dump();
   SubmitResult out;
-  out.jobs_total = expanded.jobs.size();
+  // An external job serves each of its case's series (one per quantity).
+  out.jobs_total = study.external() ? expanded_job_hashes(expanded).size() : expanded.jobs.size();
   Transaction tx(db_);
   {
     auto st = db_.prepare("SELECT id, definition_json, status FROM studies WHERE name = ?");
@@ -41,16 +62,23 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     };
     const bool exists = st.step();
     const bool changed = exists && same(nlohmann::json::parse(st.as_text(1))) != same(study.definition);
-    if (changed && !replace)
+    // An external study's file can stay as it was while its jobs change
+    // (a template file edited, another version of the code): its jobs are
+    // then replaced as by --replace, without asking.
+    const bool jobs_changed = exists && !changed && study.external() &&
+                              stored_job_hashes(st.as_int(0)) != expanded_job_hashes(expanded);
+    if (jobs_changed) replace = true;
+    if ((changed || jobs_changed) && !replace)
       throw InputError("/name", "a different study named '" + study.name + "' is already in " +
                                     file_.filename().string() +
                                     "; run it with --replace to replace the stored one (finished jobs it "
                                     "shares are reused), rename the study, or use another --db");
-    if (changed) {
+    if (changed || jobs_changed) {
       const long long old_id = st.as_int(0);
       st.reset();
       remove_study_rows(old_id, study.name);
       out.replaced = true;
+      out.jobs_changed = jobs_changed;
     } else if (exists) {
       out.study_id = st.as_int(0);
       const bool cancelled = st.as_text(2) == "cancelled";
@@ -82,13 +110,13 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
 
   std::vector<long long> series_ids;
   auto ins_series = db_.prepare(
-      "INSERT INTO series(study_id, position, case_name, convection, fwhm_dp, drag, deposition) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?)");
+      "INSERT INTO series(study_id, position, case_name, convection, fwhm_dp, drag, deposition, quantity) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
   for (std::size_t i = 0; i < expanded.series.size(); ++i) {
     const auto& k = expanded.series[i];
     ins_series.reset();
     ins_series.bind_all(out.study_id, static_cast<long long>(i), k.case_name, k.convection, k.fwhm_dp, k.drag,
-                        k.deposition).run();
+                        k.deposition, k.quantity).run();
     series_ids.push_back(db_.last_insert_rowid());
   }
   auto ins_job = db_.prepare(
@@ -99,12 +127,18 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
   auto link = db_.prepare(
       "INSERT OR IGNORE INTO study_jobs(study_id, job_id, series_id, grid_index, delta_star_nominal) "
       "VALUES (?, ?, ?, ?, ?)");
+  std::set<std::string> counted;  // reused jobs, each once
   for (const auto& job : expanded.jobs) {
     const long long cells = static_cast<long long>(job.cells[0]) * job.cells[1] * job.cells[2];
     ins_job.reset();
     ins_job.bind_all(job.hash, job.doc.dump(), job.cells[0], job.cells[1], job.cells[2], cells, job.delta_star)
         .run();
     const bool inserted = db_.changes() > 0;
+    // An external job's document may differ from the stored one in what is
+    // not its identity (where the template is, how quantities are read):
+    // the study's now is the one to run and collect with (re-collection).
+    if (!inserted && study.external())
+      db_.prepare("UPDATE jobs SET spec_json = ? WHERE job_hash = ?").bind_all(job.doc.dump(), job.hash).run();
     find_job.reset();
     find_job.bind_all(job.hash);
     find_job.step();
@@ -112,7 +146,7 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     const std::string status = find_job.as_text(1);
     if (inserted)
       ++out.jobs_new;
-    else if (status == "done")
+    else if (status == "done" && (!study.external() || counted.insert(job.hash).second))
       ++out.jobs_reused;
     requeue.reset();
     requeue.bind_all(job_id).run();

@@ -1,0 +1,38 @@
+// Results of external jobs (docs/EXTERNAL.md): what the scheduler adds to
+// them before they are stored, and how a finished one is logged.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "store/store.h"
+
+namespace gridfree {
+
+bool is_external_job(const nlohmann::json& spec);
+
+// For an external job (spec with case.external), writes the collect section
+// the result was read with into the stored result document as
+// "collected_with", so a later change of the study's collect section is
+// seen (re-collection, sched/recollect.h). Other jobs: unchanged.
+void note_collect_spec(const nlohmann::json& spec, ResultRow& row);
+// note_collect_spec, and the job's cells as the result's (the worker does
+// not know them), so the measured cost history has its cell counts.
+void note_external_result(const ClaimedJob& job, ResultRow& row);
+
+// Case name → external.cost.cpu_s_per_cell of a study definition.
+std::map<std::string, double> declared_cpu_s_per_cell(const nlohmann::json& definition);
+
+// An external job's default timeout: kJobTimeoutMargin × declared CPU s per
+// cell × cells, at least kMinJobTimeoutS (sched/job_timeout.h); none (0)
+// without a declared figure: gridfree cannot guess another code's run time
+// (give --timeout or the study's timeout_s).
+double external_job_timeout_s(const ClaimedJob& job, const std::map<std::string, double>& cpu_s_per_cell);
+
+// "converged dp* = 1.234 (2.0 s)", or for an external result
+// "converged kinetic_energy = 0.0672, ux_probe = 0.11 (2.0 s)".
+std::string converged_message(const ResultRow& row);
+
+}  // namespace gridfree
