@@ -36,8 +36,11 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
   chart.id = "gci-" + series_slug(s, index);
   chart.title = "Three-grid GCI vs regression: " + s.label + title_suffix(s);
   chart.subtitle = "each consecutive triplet at its finest Δ*: φ_{1} ± GCI_{fine} (marker = convergence type) and φ_{ext}";
-  chart.x = delta_star_axis("Δ* (finest grid of the triplet)");
-  chart.y = {"DP*", AxisScale::linear, std::nullopt, std::nullopt};
+  // An external series: its quantity and h (docs/EXTERNAL.md).
+  const bool external = !s.series.quantity.empty();
+  chart.x = delta_star_axis(external ? s.series.h_label + " (finest grid of the triplet)"
+                                     : std::string("Δ* (finest grid of the triplet)"));
+  chart.y = {external ? s.series.quantity_label : std::string("DP*"), AxisScale::linear, std::nullopt, std::nullopt};
   if (!s.extrapolation || s.extrapolation->gci.empty()) return chart;
   const ExtrapolationView& e = *s.extrapolation;
   ChartSeries grids{"f_{i} ± U_{i} (regression)", {}, {}, {}, Marker::circle, false, false, true, 0};

@@ -12,7 +12,8 @@ Chart rde_chart(const std::vector<SeriesSummary>& series, std::optional<double> 
   chart.title = "Relative discretization error bound RDE = U/|f_{0}|";
   chart.subtitle = "series with at least 4 converged grids, each with its verdict (not converged: dashed, hollow); "
                    "log axes when the data span more than a decade";
-  chart.x = delta_star_axis();
+  // External series: h as their study defines it (one h per study's cases).
+  chart.x = series.empty() ? delta_star_axis() : delta_star_axis(series.front().series.h_axis());
   chart.y = rde_percent_axis();
   for (std::size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];

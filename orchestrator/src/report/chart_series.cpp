@@ -73,10 +73,12 @@ std::string fit_subtitle(const SeriesSummary& s) {
 Chart series_chart(const SeriesSummary& s, std::size_t index) {
   Chart chart;
   chart.id = "fig1-" + series_slug(s, index);
-  chart.title = "DP* vs Δ*: " + s.label + title_suffix(s);
+  // An external series names its quantity and the meaning of its h (docs/EXTERNAL.md).
+  const bool external = !s.series.quantity.empty();
+  chart.title = (external ? s.series.quantity + " vs h: " : std::string("DP* vs Δ*: ")) + s.label + title_suffix(s);
   chart.subtitle = fit_subtitle(s);
-  chart.x = delta_star_axis();
-  chart.y = {"DP* = Δp / (ρ_{g} U_{0}^{2})", AxisScale::linear, std::nullopt, std::nullopt};
+  chart.x = delta_star_axis(s.series.h_axis());
+  chart.y = {s.series.value_axis(), AxisScale::linear, std::nullopt, std::nullopt};
   ChartSeries points{"converged grids", s.h, s.f, {}, Marker::circle, false, false, false, 0};
   const ExtrapolationView* e = s.extrapolation ? &*s.extrapolation : nullptr;
   bool any_u = false;

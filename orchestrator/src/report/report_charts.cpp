@@ -74,7 +74,10 @@ std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, s
 std::vector<NamedChart> series_charts(const std::vector<SeriesSummary>& series, std::size_t i) {
   std::vector<NamedChart> out;
   const std::string slug = series_slug(series[i], i);
-  out.push_back({"fig1_" + slug + ".svg", "DP* against Δ* for " + series[i].label + ", with the fits, f0 and U.",
+  const bool external = !series[i].series.quantity.empty();
+  out.push_back({"fig1_" + slug + ".svg",
+                 (external ? series[i].series.quantity + " against h" : std::string("DP* against Δ*")) + " for " +
+                     series[i].label + ", with the fits, f0 and U.",
                  series_chart(series[i], i), {}});
   if (series[i].extrapolation && !series[i].extrapolation->gci.empty()) {
     out.push_back({"gci_" + slug + ".svg",

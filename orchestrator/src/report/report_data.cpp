@@ -8,7 +8,16 @@ namespace gridfree {
 // "PC1 superbee fwhm6 bvk"; a centroid-deposition series shows "centroid"
 // instead of the (unused) filter width, and any other non-default
 // deposition is appended.
+std::string SeriesData::value_axis() const {
+  return quantity.empty() ? "DP* = Δp / (ρ_{g} U_{0}^{2})" : quantity_label;
+}
+
+std::string SeriesData::h_axis() const {
+  return quantity.empty() ? "Δ* (cell size / particle diameter)" : h_label;
+}
+
 std::string SeriesData::label() const {
+  if (!quantity.empty()) return case_name + " " + quantity;
   std::string out = case_name + " " + convection + " ";
   if (deposition == "centroid") {
     out += "centroid";

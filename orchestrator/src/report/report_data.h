@@ -33,7 +33,15 @@ struct SeriesData {
   std::string status;                // queued | running | done | failed
   std::vector<GridPoint> grids;      // every grid of the series, any order
   std::optional<CoverageCheck> stored_coverage;  // made when the series finished (series.coverage_json)
-  std::string label() const;         // "PC1 superbee fwhm6 bvk"
+  std::string label() const;         // "PC1 superbee fwhm6 bvk"; external: "cavity kinetic_energy"
+  // External cases (docs/EXTERNAL.md): the quantity and how the report
+  // names it and h; all "" for a physical case's dp*.
+  std::string quantity{};
+  std::string quantity_label{};      // "kinetic_energy: mean kinetic energy [m^2/s^2]"
+  std::string h_label{};             // "h = 1 / N"
+  // Axis titles: the quantity's, or DP*'s; h's meaning, or Δ*'s.
+  std::string value_axis() const;
+  std::string h_axis() const;
 };
 
 struct StudyReportData {

@@ -1,6 +1,7 @@
 // Builders of the report tables (see report_tables.h).
 #include "report/report_tables.h"
 
+#include <algorithm>
 #include <optional>
 
 #include "extrap/verdict.h"
@@ -42,18 +43,25 @@ std::string series_status(const SeriesSummary& s) {
   return status;
 }
 
+// An external study's series (docs/EXTERNAL.md): tables say h and value.
+bool all_external(const std::vector<SeriesSummary>& series) {
+  return !series.empty() && std::all_of(series.begin(), series.end(),
+                                        [](const SeriesSummary& s) { return !s.series.quantity.empty(); });
+}
+
 }  // namespace
 
 Table grids_table(const std::vector<SeriesSummary>& series) {
   Table t;
+  const bool external = all_external(series);  // headers name h and each series' own quantity
   t.columns.push_back(text_col("series"));
   add_factor_columns(t.columns);
   t.columns.push_back(text_col("job_hash", {}, true));
-  t.columns.push_back(num_col("delta_star", "Δ*"));
+  t.columns.push_back(num_col("delta_star", external ? "h" : "Δ*"));
   for (const char* n : {"nx", "ny", "nz"}) t.columns.push_back(num_col(n, {}, true));
   t.columns.push_back(num_col("cells"));
   t.columns.push_back(text_col("status"));
-  t.columns.push_back(num_col("dp_star", "DP*"));
+  t.columns.push_back(num_col("dp_star", external ? "value" : "DP*"));
   t.columns.push_back(num_col("fhat", "fit", true));
   t.columns.push_back(num_col("u", "U"));
   t.columns.push_back(num_col("rde", "RDE"));
@@ -216,8 +224,9 @@ Table gci_table(const std::vector<SeriesSummary>& series) {
 
 Table failures_table(const std::vector<SeriesSummary>& series) {
   Table t;
-  t.columns = {text_col("series"), num_col("delta_star", "Δ*"), num_col("cells"), text_col("status"),
-               num_col("dp_star", "DP*"), prose_col("reason"), text_col("job_hash", {}, true)};
+  const bool external = all_external(series);
+  t.columns = {text_col("series"), num_col("delta_star", external ? "h" : "Δ*"), num_col("cells"), text_col("status"),
+               num_col("dp_star", external ? "value" : "DP*"), prose_col("reason"), text_col("job_hash", {}, true)};
   for (const auto& s : series) {
     for (const GridPoint& g : s.series.grids) {
       if (!is_failed(g)) continue;

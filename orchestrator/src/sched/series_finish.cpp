@@ -1,6 +1,8 @@
 // Series completion: extrapolation rows into the store; report data from the store.
 #include "sched/series_finish.h"
 
+#include "report/external_labels.h"
+
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -258,6 +260,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
     sd.deposition = s.key.deposition;
     sd.fwhm_dp = s.key.fwhm_dp;
     sd.status = s.status;
+    if (s.key.external()) label_external_series(definition, s.key, sd);
     if (!s.coverage_json.empty()) {
       const auto stored = nlohmann::json::parse(s.coverage_json, nullptr, false);
       if (stored.is_object()) sd.stored_coverage = coverage_from_json(stored);
