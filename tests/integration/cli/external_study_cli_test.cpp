@@ -3,9 +3,8 @@
 // so the series must come out converged with f0 = 1 and p = 2; a second run
 // reruns nothing, a collect edit re-collects without rerunning, a template
 // edit reruns every job. Solver runs are counted with the file the solver
-// appends to (SOLVER_RUNS). Run twice: with the external driver stand-in
-// (tests/fixtures/external/fake_external_worker.sh, needs jq) and with
-// gridfree-worker's own driver (skipped by a worker without `collect`).
+// appends to (SOLVER_RUNS). The jobs run through gridfree-worker's own
+// external driver.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -27,7 +26,6 @@ using gridfree::test_support::gridfree_in;
 using gridfree::test_support::shell_quote;
 using gridfree::test_support::sqlite_query;
 
-const fs::path kExternalWorker = gridfree::test_support::kSourceDir / "tests/fixtures/external/fake_external_worker.sh";
 const fs::path kRealWorker = fs::path(GRIDFREE_BIN_DIR) / "gridfree-worker";
 
 nlohmann::json poly_study_doc(const fs::path& dir) {
@@ -58,15 +56,9 @@ CommandRun run_in(const fs::path& dir, const std::string& args, const fs::path& 
 
 double query_number(const std::string& s) { return s.empty() ? -1e300 : std::stod(s); }
 
-class ExternalStudyCli : public ::testing::TestWithParam<bool> {};  // true: gridfree-worker's own driver
-
-TEST_P(ExternalStudyCli, ConvergesToTheAnalyticLimitAndRerunsOnlyWhatChanged) {
-  const bool real = GetParam();
-  const fs::path worker = real ? kRealWorker : kExternalWorker;
-  if (!real && std::system("command -v jq >/dev/null 2>&1") != 0) GTEST_SKIP() << "jq is needed by the driver stand-in";
-  if (real && std::system((shell_quote(kRealWorker.string()) + " collect --help >/dev/null 2>&1").c_str()) != 0)
-    GTEST_SKIP() << "this gridfree-worker has no external driver (collect)";
-  const auto dir = gridfree::test_support::fresh_scratch_dir("external_study_cli_test", real ? "real" : "fake");
+TEST(ExternalStudyCli, ConvergesToTheAnalyticLimitAndRerunsOnlyWhatChanged) {
+  const fs::path& worker = kRealWorker;
+  const auto dir = gridfree::test_support::fresh_scratch_dir("external_study_cli_test", "real");
   fs::copy(gridfree::test_support::kSourceDir / "tests/fixtures/external/poly", dir / "poly",
            fs::copy_options::recursive);
   auto doc = poly_study_doc(dir);
@@ -119,8 +111,5 @@ TEST_P(ExternalStudyCli, ConvergesToTheAnalyticLimitAndRerunsOnlyWhatChanged) {
       query_number(sqlite_query(db, "SELECT f0 FROM extrapolations WHERE chosen = 1 AND series_id = " + f_series));
   EXPECT_NEAR(f0_edited, 2.0, 1e-9);
 }
-
-INSTANTIATE_TEST_SUITE_P(Drivers, ExternalStudyCli, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "Worker" : "StandIn"; });
 
 }  // namespace
