@@ -49,16 +49,6 @@ void CellList::remove(std::uint32_t id, const Vec3& p) {
   }
 }
 
-void CellList::move_between_bins(std::uint32_t id, std::size_t from, std::size_t to) {
-  if (from == to) return;
-  auto& bin = bins_[from];
-  if (auto it = std::find(bin.begin(), bin.end(), id); it != bin.end()) {
-    *it = bin.back();
-    bin.pop_back();
-  }
-  bins_[to].push_back(id);
-}
-
 void CellList::move(std::uint32_t id, const Vec3& from, const Vec3& to) {
   if (bin_of(from) == bin_of(to)) return;
   remove(id, from);

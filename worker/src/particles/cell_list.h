@@ -33,41 +33,36 @@ class CellList {
   // Calls f(id) for every stored id in the bins around p (each bin once).
   template <class F>
   void for_each_near(const Vec3& p, F&& f) const {
-    for_each_bin_around(bin_of(p), [&](std::size_t b) {
-      for (std::uint32_t id : bins_[b]) f(id);
+    for_each_bin_around(bin_of(p), [&](const std::array<int, 3>& c) {
+      for (std::uint32_t id : bins_[flat(c[0], c[1], c[2])]) f(id);
     });
   }
 
-  // Bins by flat index, for callers that keep each particle's bin (the
-  // dense packing): the bin of p, the ids in bin b in the order
-  // for_each_near visits them, and f(b') for the bins around bin b (b
-  // itself included, each once) in for_each_near's order. Bin b' is around
-  // b exactly when b is around b'.
-  std::size_t bin_index(const Vec3& p) const {
-    const auto c = bin_of(p);
-    return flat(c[0], c[1], c[2]);
-  }
-  std::size_t bin_count() const { return bins_.size(); }
-  const std::vector<std::uint32_t>& bin(std::size_t b) const { return bins_[b]; }
+  // The geometry alone, for a caller that keeps its own bins on it (the
+  // dense packing, particles/packing_bins.h): the bin of p, the bins per
+  // axis, and f(c') for the bins c' around bin c (c itself included, each
+  // once) in the order for_each_near visits them. c' is around c exactly
+  // when c is around c'.
+  std::array<int, 3> bin_of(const Vec3& p) const;
+  const std::array<int, 3>& bins_per_axis() const { return n_; }
   template <class F>
-  void for_each_bin_around(std::size_t b, F&& f) const {
-    const auto nx = static_cast<std::size_t>(n_[0]), ny = static_cast<std::size_t>(n_[1]);
-    const std::array<int, 3> c{static_cast<int>(b % nx), static_cast<int>(b / nx % ny),
-                               static_cast<int>(b / (nx * ny))};
-    bool inner = true;
-    for (int a = 0; a < 3; ++a) inner = inner && c[a] >= 1 && c[a] + 1 < n_[a];
-    if (!inner) {
-      for_each_bin_around(c, f);
-      return;
+  void for_each_bin_around(const std::array<int, 3>& c, F&& f) const {
+    std::array<std::array<int, 3>, 3> idx{};
+    std::array<int, 3> count{};
+    for (int a = 0; a < 3; ++a) {
+      for (int o = -1; o <= 1; ++o) {
+        int b = c[a] + o;
+        if (periodic_[a]) b = (b % n_[a] + n_[a]) % n_[a];
+        else if (b < 0 || b >= n_[a]) continue;
+        bool seen = false;
+        for (int q = 0; q < count[a]; ++q) seen = seen || idx[a][q] == b;
+        if (!seen) idx[a][count[a]++] = b;
+      }
     }
-    // No bound or wrap near b: the general order, k then j then i, is
-    // that of the flat offsets.
-    for (std::size_t k = b - nx * ny; k <= b + nx * ny; k += nx * ny)
-      for (std::size_t j = k - nx; j <= k + nx; j += nx)
-        for (std::size_t i = j - 1; i <= j + 1; ++i) f(i);
+    for (int k = 0; k < count[2]; ++k)
+      for (int j = 0; j < count[1]; ++j)
+        for (int i = 0; i < count[0]; ++i) f(std::array<int, 3>{idx[0][i], idx[1][j], idx[2][k]});
   }
-  // move() for a caller that knows both bins (from = the bin id is in).
-  void move_between_bins(std::uint32_t id, std::size_t from, std::size_t to);
 
   // Minimum-image separation b − a (inline: the hot path of every overlap test).
   Vec3 separation(const Vec3& a, const Vec3& b) const {
@@ -94,25 +89,6 @@ class CellList {
   const std::array<bool, 3>& periodic() const { return periodic_; }
 
  private:
-  template <class F>
-  void for_each_bin_around(const std::array<int, 3>& c, F&& f) const {
-    std::array<std::array<int, 3>, 3> idx{};
-    std::array<int, 3> count{};
-    for (int a = 0; a < 3; ++a) {
-      for (int o = -1; o <= 1; ++o) {
-        int b = c[a] + o;
-        if (periodic_[a]) b = (b % n_[a] + n_[a]) % n_[a];
-        else if (b < 0 || b >= n_[a]) continue;
-        bool seen = false;
-        for (int q = 0; q < count[a]; ++q) seen = seen || idx[a][q] == b;
-        if (!seen) idx[a][count[a]++] = b;
-      }
-    }
-    for (int k = 0; k < count[2]; ++k)
-      for (int j = 0; j < count[1]; ++j)
-        for (int i = 0; i < count[0]; ++i) f(flat(idx[0][i], idx[1][j], idx[2][k]));
-  }
-  std::array<int, 3> bin_of(const Vec3& p) const;
   std::size_t flat(int i, int j, int k) const { return (std::size_t(k) * n_[1] + j) * n_[0] + i; }
 
   Vec3 length_;

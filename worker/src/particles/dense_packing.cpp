@@ -121,11 +121,29 @@ std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double 
     return std::array<double, 5>{std::floor(c[1] / diameter), std::floor(c[2] / diameter), c[0], c[1], c[2]};
   };
   std::sort(x.begin(), x.end(), [&](const Vec3& a, const Vec3& b) { return key(a) < key(b); });
-  PackingBins bins(cells.bin_count());
-  std::vector<std::size_t> home_bin(n);
+  // The bins the centres (inside lo..hi on bounded axes) and their
+  // neighbour bins can reach.
+  PackingBins::Bin bin_lo{}, bin_hi{};
+  {
+    Vec3 at_lo{}, at_hi{};
+    for (int a = 0; a < 3; ++a) {
+      at_lo[a] = allowed.lo(a);
+      at_hi[a] = region.periodic[a] ? 0.0 : allowed.hi(a);
+    }
+    const auto c_lo = cells.bin_of(at_lo), c_hi = cells.bin_of(at_hi);
+    for (int a = 0; a < 3; ++a) {
+      const int n_a = cells.bins_per_axis()[a];
+      bin_lo[a] = region.periodic[a] ? 0 : std::max(0, c_lo[a] - 1);
+      bin_hi[a] = region.periodic[a] ? n_a - 1 : std::min(n_a - 1, c_hi[a] + 1);
+    }
+  }
+  PackingBins bins(cells, bin_lo, bin_hi);
+  std::vector<PackingBins::Bin> home_bin(n);
+  std::vector<std::size_t> home_slot(n);
   for (std::size_t i = 0; i < x.size(); ++i) {
-    home_bin[i] = cells.bin_index(x[i]);
-    bins.insert(static_cast<std::uint32_t>(i), home_bin[i]);
+    home_bin[i] = cells.bin_of(x[i]);
+    home_slot[i] = bins.slot(home_bin[i]);
+    bins.insert(static_cast<std::uint32_t>(i), home_slot[i], x[i]);
   }
 
   // 2–3. Gauss–Seidel overlap removal while δ grows to d.
@@ -139,24 +157,29 @@ std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double 
   // around it has a stamp newer than its last visit that moved nothing
   // (clean_at; 0 = no such visit). Measured on the SSCP-sized bed, this
   // skips about a quarter of the visits, most of them in the last sweeps.
-  std::vector<std::uint64_t> changed(cells.bin_count(), 0);
+  std::vector<std::uint64_t> changed(bins.slots(), 0);
   std::vector<std::uint64_t> clean_at(n, 0);
   std::uint64_t stamp = 1;
   double delta = std::min(1.0, options.start_fraction) * diameter;
   std::vector<std::uint32_t> near;
+  std::vector<Vec3> near_x;
   const auto move_to = [&](std::uint32_t id, const Vec3& to) {
-    const std::size_t from_bin = home_bin[id], to_bin = cells.bin_index(to);
-    changed[from_bin] = changed[to_bin] = ++stamp;
-    if (to_bin != from_bin) {
-      bins.remove(id, from_bin);
-      bins.insert(id, to_bin);
+    const PackingBins::Bin to_bin = cells.bin_of(to);
+    const std::size_t from_slot = home_slot[id], to_slot = bins.slot(to_bin);
+    changed[from_slot] = changed[to_slot] = ++stamp;
+    if (to_slot != from_slot) {
+      bins.remove(id, from_slot);
+      bins.insert(id, to_slot, to);
       home_bin[id] = to_bin;
+      home_slot[id] = to_slot;
+    } else {
+      bins.update(id, from_slot, to);
     }
     x[id] = to;
   };
-  const auto untouched_since = [&](std::size_t home, std::uint64_t t) {
+  const auto untouched_since = [&](const PackingBins::Bin& home, std::uint64_t t) {
     bool quiet = true;
-    cells.for_each_bin_around(home, [&](std::size_t b) { quiet = quiet && changed[b] <= t; });
+    bins.for_each_around(home, [&](std::size_t s) { quiet = quiet && changed[s] <= t; });
     return quiet;
   };
   for (int sweep = 1; sweep <= options.max_sweeps; ++sweep) {
@@ -171,14 +194,22 @@ std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double 
         move_to(i, allowed.project(x[i], cells));
         ++moves;
       }
+      // The neighbours' ids and centres; a neighbour moves during this
+      // visit only when its own pair is pushed, so the copy of a centre
+      // not yet reached is the centre.
       near.clear();
-      cells.for_each_bin_around(home_bin[i], [&](std::size_t b) {
-        bins.for_each_in(b, [&](std::uint32_t j) {
-          if (j != i) near.push_back(j);
+      near_x.clear();
+      bins.for_each_around(home_bin[i], [&](std::size_t s) {
+        bins.for_each_in(s, [&](std::uint32_t j, const Vec3& c) {
+          if (j != i) {
+            near.push_back(j);
+            near_x.push_back(c);
+          }
         });
       });
-      for (std::uint32_t j : near) {
-        Vec3 s = cells.separation(x[i], x[j]);
+      for (std::size_t q = 0; q < near.size(); ++q) {
+        const std::uint32_t j = near[q];
+        Vec3 s = cells.separation(x[i], near_x[q]);
         double d2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
         if (d2 >= check * check) continue;
         if (d2 < 1e-24 * diameter * diameter) {  // coincident: any direction
