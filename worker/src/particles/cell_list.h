@@ -45,6 +45,7 @@ class CellList {
   // when c is around c'.
   std::array<int, 3> bin_of(const Vec3& p) const;
   const std::array<int, 3>& bins_per_axis() const { return n_; }
+  const Vec3& bin_size() const { return h_; }
   template <class F>
   void for_each_bin_around(const std::array<int, 3>& c, F&& f) const {
     std::array<std::array<int, 3>, 3> idx{};

@@ -102,8 +102,15 @@ class Region {
 std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double diameter, std::size_t n,
                                        ParticleRandom& rng, const DensePackingOptions& options,
                                        DensePackingTrace* trace) {
+  std::vector<Vec3> x = random_packing_centres(region, diameter, n, rng);
+  remove_overlaps(region, diameter, x, rng, options, trace);
+  return x;
+}
+
+std::vector<Vec3> random_packing_centres(const DensePackingRegion& region, double diameter, std::size_t n,
+                                         ParticleRandom& rng) {
   const Region allowed(region);
-  CellList cells(region.length, region.periodic, diameter * (1 + 1e-3));
+  const CellList cells(region.length, region.periodic, diameter * (1 + 1e-3));
 
   // 1. Uniform centres in the allowed set.
   std::vector<Vec3> x;
@@ -121,6 +128,14 @@ std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double 
     return std::array<double, 5>{std::floor(c[1] / diameter), std::floor(c[2] / diameter), c[0], c[1], c[2]};
   };
   std::sort(x.begin(), x.end(), [&](const Vec3& a, const Vec3& b) { return key(a) < key(b); });
+  return x;
+}
+
+void remove_overlaps(const DensePackingRegion& region, double diameter, std::vector<Vec3>& x, ParticleRandom& rng,
+                     const DensePackingOptions& options, DensePackingTrace* trace) {
+  const Region allowed(region);
+  const CellList cells(region.length, region.periodic, diameter * (1 + 1e-3));
+  const std::size_t n = x.size();
   // The bins the centres (inside lo..hi on bounded axes) and their
   // neighbour bins can reach.
   PackingBins::Bin bin_lo{}, bin_hi{};
@@ -163,8 +178,18 @@ std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double 
   double delta = std::min(1.0, options.start_fraction) * diameter;
   std::vector<std::uint32_t> near;
   std::vector<Vec3> near_x;
+  // A centre well inside its bin's interval on every axis (by 10⁻⁹ of a
+  // bin) is in that bin: floor(x / h) cannot round across the bin's edge.
+  const Vec3& h = cells.bin_size();
+  const auto bin_after_move = [&](const PackingBins::Bin& from, const Vec3& to) {
+    for (int a = 0; a < 3; ++a) {
+      const double edge = from[a] * h[a], margin = 1e-9 * h[a];
+      if (!(to[a] > edge + margin && to[a] < edge + h[a] - margin)) return cells.bin_of(to);
+    }
+    return from;
+  };
   const auto move_to = [&](std::uint32_t id, const Vec3& to) {
-    const PackingBins::Bin to_bin = cells.bin_of(to);
+    const PackingBins::Bin to_bin = bin_after_move(home_bin[id], to);
     const std::size_t from_slot = home_slot[id], to_slot = bins.slot(to_bin);
     changed[from_slot] = changed[to_slot] = ++stamp;
     if (to_slot != from_slot) {
@@ -236,7 +261,7 @@ std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double 
       const bool inside = std::all_of(x.begin(), x.end(), [&](const Vec3& c) { return allowed.allowed(c, cells); });
       if (inside) {
         if (trace != nullptr) trace->sweeps = sweep;
-        return x;
+        return;
       }
     }
     delta = std::min(diameter, delta * (1 + options.growth));

@@ -53,8 +53,18 @@ struct DensePackingTrace {
 
 // Throws std::runtime_error when the sweeps do not remove every overlap
 // (the fraction is too close to jamming for this protocol).
+// = random_packing_centres, then remove_overlaps.
 std::vector<Vec3> random_dense_packing(const DensePackingRegion& region, double diameter, std::size_t n,
                                        ParticleRandom& rng, const DensePackingOptions& options = {},
                                        DensePackingTrace* trace = nullptr);
+
+// Step 1: n centres uniform in the allowed set, sorted in slabs of one
+// diameter (y, then z, then x).
+std::vector<Vec3> random_packing_centres(const DensePackingRegion& region, double diameter, std::size_t n,
+                                         ParticleRandom& rng);
+
+// Steps 2–3 on the centres x (in place; their order is the sweeps' order).
+void remove_overlaps(const DensePackingRegion& region, double diameter, std::vector<Vec3>& x, ParticleRandom& rng,
+                     const DensePackingOptions& options = {}, DensePackingTrace* trace = nullptr);
 
 }  // namespace gridfree

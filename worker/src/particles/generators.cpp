@@ -98,8 +98,9 @@ SscpLikeParams read_sscp_like(const GeneratorSpec& spec, const CaseSpec& c, Prob
   p.bubble_solids_fraction = read_number(j, "bubble_solids_fraction", w, problems, 0.01);
   const std::string emulsion = read_string(j, "emulsion", w, problems, "random");
   if (emulsion == "lattice") p.emulsion = SscpEmulsion::kLattice;
+  else if (emulsion == "compression") p.emulsion = SscpEmulsion::kCompression;
   else if (emulsion != "random")
-    problems.add(child_pointer(w, "emulsion"), "'" + emulsion + "' is not one of random, lattice");
+    problems.add(child_pointer(w, "emulsion"), "'" + emulsion + "' is not one of random, compression, lattice");
   p.relaxation_sweeps = static_cast<int>(read_integer(j, "relaxation_sweeps", w, problems, 20));
   if (p.emulsion != SscpEmulsion::kLattice && j.is_object() && j.contains("relaxation_sweeps"))
     problems.add(child_pointer(w, "relaxation_sweeps"), "applies only to \"emulsion\": \"lattice\"");
@@ -107,6 +108,9 @@ SscpLikeParams read_sscp_like(const GeneratorSpec& spec, const CaseSpec& c, Prob
   if (p.emulsion == SscpEmulsion::kLattice)
     check_fraction(p.solids_fraction, kMaxLatticeFraction, child_pointer(w, "solids_fraction"),
                    "the jittered lattice", problems);
+  else if (p.emulsion == SscpEmulsion::kCompression)
+    check_fraction(p.solids_fraction, kMaxCompressionFraction, child_pointer(w, "solids_fraction"),
+                   "the compression", problems);
   else
     check_fraction(p.solids_fraction, kMaxRandomEmulsionFraction, child_pointer(w, "solids_fraction"),
                    "the random dense packing", problems);

@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "particles/compression_packing.h"
 #include "particles/dense_packing.h"
 #include "particles/generator_params.h"
 #include "particles/sphere_packer.h"
@@ -189,7 +190,10 @@ GeneratedParticles generate_sscp_like(const SscpLikeParams& p, const CaseSpec& c
     region.holes = bubbles;
     region.hole_radius = radius;
     try {
-      for (const Vec3& x : random_dense_packing(region, d, n_emulsion, rng)) packer.add(x);
+      const std::vector<Vec3> centres = p.emulsion == SscpEmulsion::kCompression
+                                            ? compressed_dense_packing(region, d, n_emulsion, rng)
+                                            : random_dense_packing(region, d, n_emulsion, rng);
+      for (const Vec3& x : centres) packer.add(x);
     } catch (const std::runtime_error& e) {
       throw InputError(where + "/solids_fraction", std::string("the random packing did not converge: ") + e.what());
     }
