@@ -17,6 +17,7 @@
 #include <string>
 
 #include "job/template_hash.h"
+#include "openfoam_present.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 #include "test_files.h"
@@ -28,11 +29,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kCavity = fs::path(GRIDFREE_SOURCE_DIR) / "tests/fixtures/external/cavity";
-
-bool openfoam_installed() {
-  return test_support::run_merged("command -v icoFoam && command -v blockMesh").code == 0 &&
-         fs::is_directory("/usr/share/openfoam");
-}
 
 json cavity_job(const fs::path& template_dir, int n) {
   return {{"schema", "gridfree/job/1"},
@@ -84,7 +80,7 @@ CavityRun run_cavity(const std::string& name, const json& job, const std::string
 class OpenFoamCavity : public ::testing::Test {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(openfoam_installed())
+    ASSERT_TRUE(test_support::openfoam_present())
         << "OpenFOAM (icoFoam, blockMesh, /usr/share/openfoam) is not installed: run scripts/install-deps.sh test";
   }
 };

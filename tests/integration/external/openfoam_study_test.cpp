@@ -26,6 +26,7 @@
 
 #include "fake_worker.h"
 #include "project_paths.h"
+#include "openfoam_present.h"
 #include "run_command.h"
 #include "scratch_dir.h"
 #include "wait_until.h"
@@ -39,11 +40,6 @@ namespace ts = gridfree::test_support;
 using nlohmann::json;
 
 const fs::path kStudyWorker = fs::path(GRIDFREE_BIN_DIR) / "gridfree-worker";
-
-bool openfoam_present() {
-  return ts::run_merged("command -v icoFoam && command -v blockMesh").code == 0 &&
-         fs::is_directory("/usr/share/openfoam");
-}
 
 // The shipped study on the grids `n`, its template copied beside it; every
 // solver run appends its case folder to dir/starts.txt.
@@ -74,7 +70,7 @@ std::vector<std::string> lines_in(const fs::path& f) {
 class OpenFoamStudy : public ::testing::Test {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(openfoam_present())
+    ASSERT_TRUE(ts::openfoam_present())
         << "OpenFOAM (icoFoam, blockMesh, /usr/share/openfoam) is not installed: run scripts/install-deps.sh test";
   }
 };
