@@ -45,7 +45,7 @@ BudgetUse budget_use(const std::map<long long, InFlight>& running) {
 std::string job_label(Store& store, const ClaimedJob& job) {
   auto st = store.db().prepare(
       "SELECT se.case_name, se.convection, se.fwhm_dp, se.drag, se.deposition, sj.alignment_only FROM study_jobs sj "
-      "JOIN series se ON se.id = sj.series_id WHERE sj.job_id = ? AND sj.study_id = ? "
+      "JOIN series se ON se.id = sj.series_id WHERE sj.job_id = ? AND +sj.study_id = ? "
       "ORDER BY sj.alignment_only LIMIT 1");
   st.bind_all(job.job_id, job.study_id);
   std::string label = job.job_hash.substr(0, 12);
