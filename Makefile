@@ -45,10 +45,11 @@ test-unit: build
 # Unit and integration tests under AddressSanitizer + UndefinedBehaviorSanitizer
 # (GCC, -O1 -g1); verification tests are neither built nor run there (minutes
 # of numerics, no new paths). Nor are the tests that time a real Slurm cluster
-# or the worker against itself, or pin the bits of a 93 000-particle bed
+# or the worker against itself, count SQLite steps of large studies, or pin
+# the bits of a 93 000-particle bed
 # (SANITIZE_EXCLUDE, docs/LIMITS.md): their code paths run there through the
 # fake-sbatch, timeout and small-bed tests.
-SANITIZE_EXCLUDE ?= ^(SlurmCluster\.|RunTimeoutResume\.|GeneratedBedPin\.SscpStudyInstanceT1$$)
+SANITIZE_EXCLUDE ?= ^(SlurmCluster\.|RunTimeoutResume\.|SchedulerCost\.|GeneratedBedPin\.SscpStudyInstanceT1$$)
 test-sanitize: test-deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_SANITIZE=ON -DGRIDFREE_BUILD_BENCH=OFF \
 	  -DGRIDFREE_BUILD_VERIFICATION_TESTS=OFF >/dev/null
