@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "report/bed_about.h"
 #include "report/cost_table.h"
 #include "report/chart_common.h"
 #include "report/report_tables.h"
@@ -45,6 +46,14 @@ std::string series_page_file(const ReportContent& content, std::size_t i) {
   return "series/" + series_slug(content.series[i], i) + ".html";
 }
 
+std::vector<AboutSection> study_about_sections(const ReportContent& content) {
+  std::vector<AboutSection> out = about_sections(content.data.generator_kinds);
+  std::vector<std::string> cases;
+  for (const auto& s : content.series) cases.push_back(s.series.case_name);
+  if (auto beds = bed_about_section(cases, content.data.beds, content.data.ensembles)) out.push_back(std::move(*beds));
+  return out;
+}
+
 ReportContent build_report_content(const StudyReportData& data, const Extrapolator& extrapolate) {
   ReportContent c;
   // Everything but the series, which live on in c.series (one copy, not two).
@@ -63,6 +72,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.data.adaptive_decisions = data.adaptive_decisions;
   c.data.alignment = data.alignment;
   c.data.ensembles = data.ensembles;
+  c.data.beds = data.beds;
   c.layout = layout_for(data.series.size());
   c.series = summarize_series(data, extrapolate);
   c.differences = one_factor_differences(c.series);

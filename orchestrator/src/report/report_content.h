@@ -8,6 +8,7 @@
 
 #include "report/differences.h"
 #include "report/extrapolator.h"
+#include "report/report_about.h"
 #include "report/report_alignment.h"
 #include "report/report_charts.h"
 #include "report/report_data.h"
@@ -65,5 +66,9 @@ NamedTable head_of_series_tables(const std::vector<SeriesSummary>& series, std::
 
 // Summary layout: series i's page, series/<slug>.html (report/series_page.cpp).
 std::string series_page_file(const ReportContent& content, std::size_t i);
+
+// The "About this case" sections: the generators' fixed texts
+// (report_about.h), then the beds' structure (bed_about.h).
+std::vector<AboutSection> study_about_sections(const ReportContent& content);
 
 }  // namespace gridfree

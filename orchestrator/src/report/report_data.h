@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "extrap/self_check.h"
 #include "report/alignment_data.h"
 
@@ -59,6 +61,7 @@ struct StudyReportData {
   std::vector<std::string> adaptive_decisions;  // adaptive series: every decision in order (report/adaptive_section.h)
   std::vector<AlignmentGrid> alignment;  // the study's alignment check, if it has one (report_alignment.h)
   std::map<std::string, std::vector<std::string>> ensembles;  // name → instance cases (report_ensembles.h)
+  std::map<std::string, nlohmann::json> beds;  // case → the "bed" of one of its results (store/store_beds.h, report/bed_about.h)
 };
 
 }  // namespace gridfree

@@ -81,7 +81,7 @@ std::string filtered_series_table(const ReportContent& c) {
 std::string about_section(const ReportContent& c) {
   std::string out;
   int n = 0;
-  for (const auto& a : about_sections(c.data.generator_kinds)) {
+  for (const auto& a : study_about_sections(c)) {
     out += "<h2 id=\"about" + (n++ ? "-" + std::to_string(n) : std::string()) + "\">" + xml_escape(a.title) + "</h2>\n";
     for (const auto& p : a.paragraphs) out += "<p>" + xml_escape(p) + "</p>\n";
   }

@@ -69,7 +69,7 @@ std::string render_markdown(const ReportContent& c) {
   }
   out += "\n";
   out += adaptive_section_markdown(c.data.adaptive_decisions);
-  for (const auto& a : about_sections(c.data.generator_kinds)) {
+  for (const auto& a : study_about_sections(c)) {
     out += "## " + a.title + "\n\n";
     for (const auto& p : a.paragraphs) out += p + "\n\n";
   }

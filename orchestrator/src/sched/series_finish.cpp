@@ -16,6 +16,7 @@
 #include "sched/adaptive_series.h"
 #include "sched/adaptive_window.h"
 #include "store/store_alignment.h"
+#include "store/store_beds.h"
 #include "store/store_ensembles.h"
 #include "study/adaptive_grids.h"
 
@@ -251,6 +252,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   if (target.is_number()) d.target_rde = target.get<double>();
   for (const auto& e : adaptive_events(store, study_id)) d.adaptive_decisions.push_back(e.message);
   d.ensembles = study_ensembles(store.db(), study_id);
+  d.beds = case_beds(store.db(), study_id);
   for (const auto& s : store.series_of_study(study_id)) {
     SeriesData sd;
     sd.id = s.id;

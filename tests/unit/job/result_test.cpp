@@ -7,6 +7,7 @@
 
 #include "core/schema_validation.h"
 #include "job/result.h"
+#include "particles/bed_summary.h"
 
 namespace gridfree {
 namespace {
@@ -57,6 +58,32 @@ TEST(Result, RoundTrip) {
   EXPECT_EQ(back.mass_imbalance, r.mass_imbalance);
   EXPECT_EQ(back.extra, r.extra);
   EXPECT_EQ(back.version, r.version);
+}
+
+// A result with the bed's summary (particles/bed_summary.h) of a simple
+// cubic lattice validates, reads back unchanged, and says `ordered`.
+TEST(Result, BedSummaryValidatesAndReadsBack) {
+  std::vector<Particle> lattice;
+  const double d = 0.1, a = 1.25 * d;
+  for (int k = 0; k < 8; ++k)
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i) lattice.push_back({(i + 0.5) * a, (j + 0.5) * a, (k + 0.5) * a, d, 0, 0, 0});
+  const std::array<double, 3> box{8 * a, 8 * a, 8 * a};
+  JobResult r = example();
+  r.bed = bed_summary(bed_structure(lattice, box, {true, false, true}), lattice, box);
+  r.bed["cpu_s"] = 0.01;
+  const nlohmann::json j = to_json(r);
+  const auto problems = validate_against_schema(j, "result.schema");
+  EXPECT_TRUE(problems.empty()) << format_problems(problems);
+  EXPECT_TRUE(j.at("bed").at("ordered").get<bool>()) << j.at("bed").dump();
+  EXPECT_EQ(result_from_json(j).bed, r.bed);
+  // A misspelt field is refused by the schema.
+  nlohmann::json bad = j;
+  bad["bed"]["orderd"] = true;
+  EXPECT_FALSE(validate_against_schema(bad, "result.schema").empty());
+  // Without a bed (a continuum bed): no key at all.
+  r.bed = nullptr;
+  EXPECT_FALSE(to_json(r).contains("bed"));
 }
 
 TEST(Result, DivergedRunWritesNullsForNonFiniteNumbers) {

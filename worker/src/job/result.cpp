@@ -69,6 +69,7 @@ nlohmann::json to_json(const JobResult& r) {
                       {"max_solids_fraction", number_or_null(r.max_solids_fraction)},
                       {"mass_imbalance", number_or_null(r.mass_imbalance)}};
   if (r.extra.is_object() && !r.extra.empty()) j["extra"] = r.extra;
+  if (r.bed.is_object()) j["bed"] = r.bed;
   j["version"] = r.version;
   return j;
 }
@@ -98,6 +99,7 @@ JobResult result_from_json(const nlohmann::json& j) {
   r.max_solids_fraction = number_at(j, "diagnostics", "max_solids_fraction");
   r.mass_imbalance = number_at(j, "diagnostics", "mass_imbalance");
   if (j.contains("extra")) r.extra = j.at("extra");
+  if (j.contains("bed")) r.bed = j.at("bed");
   r.version = j.at("version").get<std::string>();
   return r;
 }

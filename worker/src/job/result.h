@@ -34,6 +34,7 @@ struct JobResult {
   double max_solids_fraction = 0;
   double mass_imbalance = 0;                // |Σ in − Σ out| / Σ in, mass flux
   nlohmann::json extra = nlohmann::json::object();  // more diagnostics (filter stats, timings per phase)
+  nlohmann::json bed;                       // the bed's structure summary (particles/bed_summary.h); null: none
   std::string version;
 };
 
