@@ -56,11 +56,16 @@ std::string peak(const std::vector<const nlohmann::json*>& beds, const std::stri
 
 std::string ordered_words(const std::vector<const nlohmann::json*>& beds) {
   std::size_t ordered = 0, known = 0;
-  for (const auto* b : beds)
-    if (const auto v = value_at(*b, "/largest_structure_factor_core/s_over_n")) {
+  // The worker's own flag (particles/bed_summary.h), else the same rule here.
+  for (const auto* b : beds) {
+    if (b->contains("ordered") && b->at("ordered").is_boolean()) {
+      ++known;
+      ordered += b->at("ordered").get<bool>();
+    } else if (const auto v = value_at(*b, "/largest_structure_factor_core/s_over_n")) {
       ++known;
       ordered += *v >= kOrderedBedPeak;
     }
+  }
   if (known == 0) return "order not measured";
   if (beds.size() == 1) return ordered ? "ORDERED (core peak ≥ 0.05 N)" : "random (core peak < 0.05 N)";
   if (ordered == 0) return "random in every instance (core peak < 0.05 N)";

@@ -15,7 +15,7 @@
 
 namespace gridfree {
 
-inline constexpr double kOrderedBedPeak = 0.05;  // core S/N flagged ordered (worker: particles/bed_summary.h)
+inline constexpr double kOrderedBedPeak = 0.05;  // core S/N flagged ordered when a summary lacks `ordered` (worker: particles/bed_summary.h)
 
 // The section, or nothing when no case has a bed summary. `cases`: every
 // case of the study in report order (duplicates ignored); `ensembles`:

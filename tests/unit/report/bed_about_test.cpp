@@ -60,9 +60,15 @@ TEST(BedAbout, OrderedSingleCaseAndNoBedsNoSection) {
   const auto s = bed_about_section({"lat"}, {{"lat", bed_of(0.75, 7.0, 0.58)}}, {});
   ASSERT_TRUE(s);
   EXPECT_NE(paragraph_starting(*s, "lat: ").find("ORDERED (core peak ≥ 0.05 N)"), std::string::npos);
-  // Exactly at the threshold: ordered (≥), as particles/bed_summary.h.
-  EXPECT_NE(paragraph_starting(*bed_about_section({"e"}, {{"e", bed_of(0.05, 3, 0.5)}}, {}), "e: ").find("ORDERED"),
-            std::string::npos);
+  // Without the worker's flag, the same rule here: exactly at the
+  // threshold is ordered (≥), as particles/bed_summary.h.
+  nlohmann::json edge = bed_of(0.05, 3, 0.5);
+  edge.erase("ordered");
+  EXPECT_NE(paragraph_starting(*bed_about_section({"e"}, {{"e", edge}}, {}), "e: ").find("ORDERED"), std::string::npos);
+  // With it, the worker's flag decides.
+  nlohmann::json flagged = bed_of(0.01, 3, 0.5);
+  flagged["ordered"] = true;
+  EXPECT_NE(paragraph_starting(*bed_about_section({"f"}, {{"f", flagged}}, {}), "f: ").find("ORDERED"), std::string::npos);
   EXPECT_FALSE(bed_about_section({"PC1"}, {}, {}));
 }
 
