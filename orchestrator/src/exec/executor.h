@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,6 +26,12 @@ struct JobLaunch {
   bool hold = false;
   std::string name;                // for people: study, series, grid (Slurm job name)
   std::array<int, 3> cells{};      // grid size (cost-model estimates)
+  // An external code's job (docs/EXTERNAL.md "Cost"): gridfree's cost model
+  // does not describe it, so executors use the scheduler's estimate instead:
+  // memory_bytes (NaN: unknown) and where it comes from.
+  bool external = false;
+  double memory_bytes = NAN;
+  std::string memory_basis;
 };
 
 // A job's state in an external queue, for `status` (Slurm: id, state, reason).

@@ -17,6 +17,7 @@
 #include "exec/slurm_queue.h"
 #include "exec/worker_progress.h"
 #include "study/slurm_block.h"
+#include "study/external_plan.h"
 #include "study/study_plan.h"
 
 namespace gridfree {
@@ -84,6 +85,10 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
   } else if (job.timeout_s > 0) {  // Slurm's limit one minute past ours, so ours is the one that fires
     a.time_minutes = static_cast<long>(std::ceil(job.timeout_s / 60.0)) + 1;
     a.time_from = "from the job timeout + 1 min";
+  } else if (job.external) {  // gridfree's model says nothing about another code's run time
+    a.time_from =
+        "not given, the cluster's default (external code without timeout_s, cost.cpu_s_per_cell or a finished job "
+        "of the case: give --time or --timeout)";
   } else if (sized) {
     a.time_minutes = ladder(std::max(5.0, settings_.margin * estimated_seconds(job.cells, a.cpus) / 60.0));
     a.time_from = margin;
@@ -103,6 +108,19 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
   } else if (env.memory) {
     a.mem_from = "from " + env.memory->name;
     a.mem_shown = env.memory->value;
+  } else if (job.external) {  // the scheduler's estimate (docs/EXTERNAL.md "Cost"), never gridfree's model
+    if (std::isfinite(job.memory_bytes)) {
+      a.mem_mb = ladder(settings_.margin * job.memory_bytes / (1024.0 * 1024.0));
+      char safety[64];
+      std::snprintf(safety, sizeof safety, "from the case's measured peak memory x %g x ", kExternalMemorySafety);
+      a.mem_from =
+          (job.memory_basis.rfind("declared", 0) == 0 ? std::string("from the declared cost.mb_per_cell x ") : safety) +
+          margin_text;
+    } else {
+      a.mem_from =
+          "not given, the cluster's default (external code without cost.mb_per_cell or a finished job of the case: "
+          "give --mem or mem_mb)";
+    }
   } else if (sized) {
     a.mem_mb = ladder(settings_.margin * estimated_memory_bytes(job.cells) / (1024.0 * 1024.0));
     a.mem_from = margin;

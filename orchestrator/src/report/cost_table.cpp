@@ -40,8 +40,12 @@ const GridPoint* cheapest_grid_for(const SeriesSummary& s, double target) {
 
 Table cost_table(const std::vector<SeriesSummary>& series, const std::vector<double>& targets) {
   Table t;
+  const bool external = !series.empty() && std::all_of(series.begin(), series.end(), [](const SeriesSummary& x) {
+    return !x.series.quantity.empty();
+  });  // an external study's declared h
   t.columns = {{"series", {}, false, false},         {"verdict", {}, false, false},
-               {"target_rde", "target RDE", false, true}, {"delta_star", "cheapest Δ*", false, true},
+               {"target_rde", "target RDE", false, true},
+               external ? Column{"h", "cheapest h", false, true} : Column{"delta_star", "cheapest Δ*", false, true},
                {"cells", {}, false, true},           {"cell_iterations", "cells × iterations", false, true},
                {"cpu_s", "CPU s", false, true},      {"peak_rss_mb", "peak MB", false, true},
                {"rde", "its RDE", false, true}};

@@ -95,6 +95,10 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
     c.grids_table = {"grids.csv", "Every grid", grids_table(c.series)};
   }
   c.failures_table = {"failures.csv", "Failures", failures_table(c.series)};
+  const bool external = !c.series.empty() && std::all_of(c.series.begin(), c.series.end(), [](const SeriesSummary& s) {
+    return !s.series.quantity.empty();
+  });
+  c.series_table.external = c.grids_table.external = c.failures_table.external = external;
   c.coverage_table = {"coverage.csv", "Coverage self-check", coverage_table(c.series)};
   c.alignment = alignment_lines(data.alignment, c.series);
   c.alignment_table = {"alignment.csv", "Alignment check", alignment_table(c.alignment)};

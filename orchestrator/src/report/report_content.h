@@ -27,6 +27,7 @@ struct NamedTable {
   // CSV is written series by series (report.cpp); this is the whole count.
   std::size_t total_rows = 0;
   std::size_t rows() const { return total_rows > table.rows.size() ? total_rows : table.rows.size(); }
+  bool external = false;  // an external study's table: its reading note names the quantity and h
 };
 
 struct ReportContent {

@@ -19,7 +19,7 @@ namespace {
 std::string table_section(const NamedTable& t, const std::string& empty_text,
                           std::size_t max_rows = std::numeric_limits<std::size_t>::max()) {
   std::string out = "## " + t.title + "\n\n";
-  const std::string note = reading_note(t.file);
+  const std::string note = reading_note(t.file, t.external);
   if (!note.empty()) out += note + "\n\n";
   const bool cut = t.rows() > std::min(max_rows, t.table.rows.size());
   out += t.table.rows.empty() ? empty_text + "\n" : to_markdown(cut ? first_rows(t.table, max_rows) : t.table);

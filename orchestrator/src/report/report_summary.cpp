@@ -49,7 +49,8 @@ VerdictItem verdict_item(const SeriesSummary& s) {
     const std::optional<double> u0 = s.extrapolation->u0;
     item.headline = "f0 = " + (u0 ? format_with_uncertainty(*f0, u0) + " (U₀)" : format_to_uncertainty_digits(*f0, u));
     if (!grids.empty())
-      item.headline += "; finest grid Δ* = " + format_g(grids.front().h, 4) + ": f₁ = " +
+      item.headline += std::string("; finest grid ") + (s.series.quantity.empty() ? "Δ*" : "h") + " = " +
+                       format_g(grids.front().h, 4) + ": f₁ = " +
                        format_with_uncertainty(grids.front().f, u) +
                        (u ? " (U₁, RDE " + format_percent(grids.front().rde) + ")" : "");
   } else {
@@ -69,10 +70,11 @@ std::vector<VerdictItem> verdict_items(const ReportContent& c) {
   return out;
 }
 
-std::string reading_note(const std::string& section) {
+std::string reading_note(const std::string& section, bool external) {
   if (section == "alignment.csv") return alignment_reading_note();
   if (section == "series.csv") {
-    return "f0 is the extrapolated (grid-free) DP*. The power law f0 + c·h^p is used when its exponent is "
+    return std::string("f0 is the extrapolated (grid-free) ") + (external ? "value of the series' quantity" : "DP*") +
+           ". The power law f0 + c·h^p is used when its exponent is "
            "found inside the accepted range; with the default method (capped) an exponent above the range is "
            "capped at its upper end (f0 + c·h^p_high), otherwise the mixed-order fit f0 + c1·h + c2·h² is used. "
            "U₀ = 1.25|f0 − f₁| + σ_RE is f0's own uncertainty (f₁ the finest grid's value). σ_RE is the "
@@ -125,7 +127,8 @@ std::string reading_note(const std::string& section) {
            "answers scatter; compare φ_ext with the regression's f0 in the last column.";
   }
   if (section == "grids.csv") {
-    return "Every job: U = Fs|f0 − f_i| + σ_RE is the uncertainty of its DP*, RDE = U/|f0|.";
+    return std::string("Every job: U = Fs|f0 − f_i| + σ_RE is the uncertainty of its ") +
+           (external ? "value (h as the study declares it)" : "DP*") + ", RDE = U/|f0|.";
   }
   if (section == "failures.csv") {
     return "Grids that finished without a usable value. They are left out of the fits and shown with "

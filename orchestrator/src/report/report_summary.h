@@ -28,6 +28,7 @@ VerdictItem verdict_item(const SeriesSummary& series);
 std::vector<VerdictItem> verdict_items(const ReportContent& content);  // every series, in order
 
 // One short paragraph per section on how to read it (keyed by CSV/section name).
-std::string reading_note(const std::string& section);
+// `external`: an external study's tables (the declared quantity and h, not DP* and Δ*).
+std::string reading_note(const std::string& section, bool external = false);
 
 }  // namespace gridfree

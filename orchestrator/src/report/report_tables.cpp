@@ -57,11 +57,12 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
   t.columns.push_back(text_col("series"));
   add_factor_columns(t.columns);
   t.columns.push_back(text_col("job_hash", {}, true));
-  t.columns.push_back(num_col("delta_star", external ? "h" : "Δ*"));
+  // An external study's CSV names h and the value (its quantity is in the series column).
+  t.columns.push_back(external ? num_col("h") : num_col("delta_star", "Δ*"));
   for (const char* n : {"nx", "ny", "nz"}) t.columns.push_back(num_col(n, {}, true));
   t.columns.push_back(num_col("cells"));
   t.columns.push_back(text_col("status"));
-  t.columns.push_back(num_col("dp_star", external ? "value" : "DP*"));
+  t.columns.push_back(external ? num_col("value") : num_col("dp_star", "DP*"));
   t.columns.push_back(num_col("fhat", "fit", true));
   t.columns.push_back(num_col("u", "U"));
   t.columns.push_back(num_col("rde", "RDE"));
@@ -83,8 +84,11 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
       row.push_back(integer_cell(g.ny));
       row.push_back(integer_cell(g.nz));
       const long long cells = static_cast<long long>(g.nx) * g.ny * g.nz;
-      row.push_back({std::to_string(cells), std::to_string(g.nx) + "×" + std::to_string(g.ny) + "×" +
-                                                std::to_string(g.nz) + " (" + std::to_string(cells) + ")"});
+      if (external)  // the declared cell count, not a "400×1×1" box
+        row.push_back(integer_cell(cells));
+      else
+        row.push_back({std::to_string(cells), std::to_string(g.nx) + "×" + std::to_string(g.ny) + "×" +
+                                                  std::to_string(g.nz) + " (" + std::to_string(cells) + ")"});
       row.push_back(text_cell(g.status));
       row.push_back(number_cell(g.dp_star, 7));
       row.push_back(number_cell(e ? e->fhat : std::nullopt, 7));
@@ -203,8 +207,9 @@ Table differences_table(const std::vector<SeriesSummary>& series,
 
 Table gci_table(const std::vector<SeriesSummary>& series) {
   Table t;
-  t.columns = {text_col("series"),        num_col("h1", "Δ*1"),          num_col("h2", "Δ*2"),
-               num_col("h3", "Δ*3"),      num_col("p"),                  num_col("f_ext", "φ_ext"),
+  const bool external = all_external(series);  // h as declared, not Δ*
+  t.columns = {text_col("series"),        num_col("h1", external ? "h1" : "Δ*1"), num_col("h2", external ? "h2" : "Δ*2"),
+               num_col("h3", external ? "h3" : "Δ*3"), num_col("p"),                  num_col("f_ext", "φ_ext"),
                num_col("gci_fine", "GCI_fine"), text_col("convergence"), text_col("status"),
                num_col("f0", "f0 (regression)"), num_col("f_ext_vs_f0", "(φ_ext−f0)/f0")};
   for (const auto& s : series) {
@@ -225,8 +230,9 @@ Table gci_table(const std::vector<SeriesSummary>& series) {
 Table failures_table(const std::vector<SeriesSummary>& series) {
   Table t;
   const bool external = all_external(series);
-  t.columns = {text_col("series"), num_col("delta_star", external ? "h" : "Δ*"), num_col("cells"), text_col("status"),
-               num_col("dp_star", external ? "value" : "DP*"), prose_col("reason"), text_col("job_hash", {}, true)};
+  t.columns = {text_col("series"), external ? num_col("h") : num_col("delta_star", "Δ*"), num_col("cells"),
+               text_col("status"), external ? num_col("value") : num_col("dp_star", "DP*"), prose_col("reason"),
+               text_col("job_hash", {}, true)};
   for (const auto& s : series) {
     for (const GridPoint& g : s.series.grids) {
       if (!is_failed(g)) continue;
@@ -266,7 +272,10 @@ Table coverage_table(const std::vector<SeriesSummary>& series) {
 
 std::string csv_by_series(const std::vector<SeriesSummary>& series,
                           Table (*of_series)(const std::vector<SeriesSummary>&)) {
-  std::string out = to_csv(of_series({}));
+  // The header from the first series' table: an external study's names h and value.
+  Table head = of_series(series.empty() ? std::vector<SeriesSummary>{} : std::vector<SeriesSummary>{series.front()});
+  head.rows.clear();
+  std::string out = to_csv(head);
   for (const auto& s : series) out += to_csv(of_series({s}), false);
   return out;
 }

@@ -17,7 +17,8 @@ bool stab_starts_with(const std::string& text, const char* prefix) { return text
 // nominal Δ* in domains of different sizes share a column.
 double stability_column_of(double delta_star) { return std::stod(format_g(delta_star, 3)); }
 
-std::string stability_delta_text(double h) { return "Δ* " + format_g(h, 3); }
+// "Δ* 0.5", or an external series' "h 0.005" (its declared h).
+std::string stability_delta_text(double h, bool external) { return (external ? "h " : "Δ* ") + format_g(h, 3); }
 
 // What a failure says in a line: the outcome word and the worker's reason.
 std::string stability_failure_text(const GridPoint& g, const std::string& outcome) {
@@ -70,14 +71,16 @@ std::string stability_line(const SeriesSummary& s) {
     }
   }
   std::string line;
+  const bool ext = !s.series.quantity.empty();
+  const auto at = [ext](double h) { return stability_delta_text(h, ext); };
   if (!first_bad && !last_ok) return pending ? "no grid finished yet" : "no grids";
   if (!first_bad) {
-    line = "converges on every finished grid, down to " + stability_delta_text(last_ok->delta_star);
+    line = "converges on every finished grid, down to " + at(last_ok->delta_star);
   } else {
     const std::string why = stability_failure_text(*first_bad, grid_outcome(*first_bad));
-    line = last_ok ? "converges down to " + stability_delta_text(last_ok->delta_star) + "; first failure at " +
-                         stability_delta_text(first_bad->delta_star) + ": " + why
-                   : "fails from the coarsest grid: first failure at " + stability_delta_text(first_bad->delta_star) + ": " +
+    line = last_ok ? "converges down to " + at(last_ok->delta_star) + "; first failure at " +
+                         at(first_bad->delta_star) + ": " + why
+                   : "fails from the coarsest grid: first failure at " + at(first_bad->delta_star) + ": " +
                          why;
     if (failures > 1) line += "; " + std::to_string(failures) + " failed grids in all";
     if (later_ok > 0) line += "; " + std::to_string(later_ok) + " finer grid(s) converge again";
@@ -109,6 +112,8 @@ MethodTally method_tally(const SeriesSummary& s, double p_low, double p_high) {
 StabilityMap stability_map(const std::vector<SeriesSummary>& series, double p_low, double p_high,
                            std::size_t max_rows) {
   StabilityMap m;
+  m.external = !series.empty() && std::all_of(series.begin(), series.end(),
+                                              [](const SeriesSummary& x) { return !x.series.quantity.empty(); });
   for (const auto& s : series)
     for (const GridPoint& g : s.series.grids) m.columns.push_back(stability_column_of(g.delta_star));
   std::sort(m.columns.begin(), m.columns.end(), std::greater<>());

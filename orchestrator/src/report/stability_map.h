@@ -65,6 +65,7 @@ struct StabilityMap {
   int omitted = 0;                    // rows left out by the cap (all of them converged on every grid, if
                                       // the cap is not smaller than the number of series with a failure)
   int series_total = 0, series_with_failures = 0;
+  bool external = false;              // an external study's: columns are its declared h, not Δ*
 };
 
 inline constexpr std::size_t kStabilityMapMaxRows = 60;

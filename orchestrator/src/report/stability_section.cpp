@@ -86,7 +86,8 @@ std::string stability_omitted_note(const StabilityMap& m) {
 }
 
 std::string stability_intro(const StabilityMap& m) {
-  return "Stability: the outcome of every grid (one row per series, one column per Δ*, coarsest on the left). " +
+  return std::string("Stability: the outcome of every grid (one row per series, one column per ") +
+         (m.external ? "h" : "Δ*") + ", coarsest on the left). " +
          std::to_string(m.series_with_failures) + " of " + std::to_string(m.series_total) +
          " series have a failed grid. A converged cell gives its outer iterations; hover over a cell for the "
          "worker's reason. The GCI of a triplet is counted usable when its convergence is monotone and its "
@@ -97,7 +98,11 @@ std::string stability_intro(const StabilityMap& m) {
 
 Table stability_grid_table(const std::vector<SeriesSummary>& series) {
   Table t;
-  t.columns = {stab_text("series"), stab_num("delta_star", "Δ*"), stab_num("cells"), stab_text("outcome"),
+  const bool external = !series.empty() && std::all_of(series.begin(), series.end(), [](const SeriesSummary& x) {
+    return !x.series.quantity.empty();
+  });  // an external study's declared h
+  t.columns = {stab_text("series"), external ? stab_num("h", "h") : stab_num("delta_star", "Δ*"), stab_num("cells"),
+               stab_text("outcome"),
                stab_num("outer_iterations", "outer iterations"), stab_text("reason", {}, true),
                stab_text("job_hash")};
   t.columns.back().csv_only = true;
@@ -129,7 +134,8 @@ Table stability_series_table(const StabilityMap& m) {
 Table stability_wide_table(const StabilityMap& m) {
   Table t;
   t.columns.push_back(stab_text("series"));
-  for (double h : m.columns) t.columns.push_back(stab_text("delta_star_" + format_g(h, 3), "Δ* " + format_g(h, 3)));
+  const std::string axis = m.external ? "h" : "Δ*", csv = m.external ? "h_" : "delta_star_";
+  for (double h : m.columns) t.columns.push_back(stab_text(csv + format_g(h, 3), axis + " " + format_g(h, 3)));
   for (const auto& r : m.rows) {
     std::vector<Cell> row{text_cell(r.label)};
     for (const auto& c : r.cells) row.push_back(text_cell(stability_cell_text(c)));
@@ -154,7 +160,8 @@ std::string stability_svg(const StabilityMap& m) {
                     "<title>Where methods fail: outcome per series and grid</title>\n";
   for (int c = 0; c < cols; ++c)
     out += "<text x=\"" + std::to_string(label_w + c * kCellW + kCellW / 2) + "\" y=\"" + std::to_string(kTop - 8) +
-           "\" text-anchor=\"middle\">Δ* " + xml_escape(format_g(m.columns[std::size_t(c)], 3)) + "</text>\n";
+           "\" text-anchor=\"middle\">" + (m.external ? "h " : "Δ* ") + xml_escape(format_g(m.columns[std::size_t(c)], 3)) +
+           "</text>\n";
   for (int r = 0; r < rows; ++r) {
     const StabilityRow& row = m.rows[std::size_t(r)];
     const int y = kTop + r * kCellH;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "job/memory_estimate.h"
 
@@ -52,7 +53,7 @@ std::vector<std::array<long long, 3>> queued_sizes(Store& store) {
 
 }  // namespace
 
-std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study) {
+std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study, const NeedOf& need) {
   const std::vector<std::array<long long, 3>> sizes = queued_sizes(store);
   std::vector<long long> studies = store.active_studies();
   if (study) studies.erase(std::remove_if(studies.begin(), studies.end(), [&](long long id) { return id != *study; }),
@@ -67,6 +68,7 @@ std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study)
   struct Row {
     long long study, cells, id;
     std::array<int, 3> size;
+    double need;
   };
   std::vector<Row> rows;
   for (long long id : studies)
@@ -75,22 +77,32 @@ std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study)
       first.bind_all(z[0], z[1], z[2], id);
       if (!first.step()) continue;
       const std::array<int, 3> cells{static_cast<int>(z[0]), static_cast<int>(z[1]), static_cast<int>(z[2])};
-      rows.push_back({id, z[0] * z[1] * z[2], first.as_int(0), cells});
+      const long long job = first.as_int(0);
+      rows.push_back({id, z[0] * z[1] * z[2], job, cells, need ? need(id, job, cells) : job_memory_estimate_bytes(cells)});
     }
+  // An unknown need runs alone: the smallest such job first, so that its
+  // measured peak gives the others an estimate soonest.
   std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
     if (a.study != b.study) return a.study < b.study;
-    if (a.cells != b.cells) return a.cells > b.cells;
+    const bool ua = std::isnan(a.need), ub = std::isnan(b.need);
+    if (ua != ub) return ua;
+    if (a.cells != b.cells) return ua ? a.cells < b.cells : a.cells > b.cells;
     return a.id < b.id;
   });
   std::vector<QueuedJob> out;
-  for (const auto& r : rows) out.push_back({r.id, job_memory_estimate_bytes(r.size)});
+  for (const auto& r : rows) out.push_back({r.id, r.need});
   return out;
+}
+
+double counted_need(double need_bytes, const BudgetPolicy& policy) {
+  return std::isnan(need_bytes) ? policy.memory_budget_bytes : need_bytes;
 }
 
 std::optional<ClaimedJob> claim_within_budget(Store& store, std::optional<long long> study, const std::string& owner,
                                               const BudgetUse& in_use, const BudgetPolicy& policy,
-                                              HeadReservation& reservation) {
-  const auto queued = queued_jobs(store, study);
+                                              HeadReservation& reservation, const NeedOf& need) {
+  auto queued = queued_jobs(store, study, need);
+  for (auto& q : queued) q.memory_bytes = counted_need(q.memory_bytes, policy);
   const auto pick = pick_next_job(queued, in_use, policy, reservation);
   if (!pick) return std::nullopt;
   return store.claim_next(study, owner, queued[*pick].job_id);

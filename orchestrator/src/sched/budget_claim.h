@@ -2,6 +2,8 @@
 // jobs of one study (or of every active study).
 #pragma once
 
+#include <array>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -10,14 +12,24 @@
 
 namespace gridfree {
 
+// need(job) of a queued job: (study id, job id, cells) → bytes; NaN when
+// unknown (an external code without a declared or measured figure,
+// docs/EXTERNAL.md "Cost"). Empty: the worker's model of the cells.
+using NeedOf = std::function<double(long long study_id, long long job_id, const std::array<int, 3>& cells)>;
+
 // The first queued job of each grid size in each study in scope, in queue
-// order, with need(job) from its cells (the only candidates the rule picks).
-std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study);
+// order (largest first; jobs of unknown need smallest first), with
+// need(job) (the only candidates the rule picks).
+std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study, const NeedOf& need = {});
+
+// need(job) as the budget counts it: an unknown need (NaN) is the whole
+// memory budget, so that such a job runs alone (0 without a budget).
+double counted_need(double need_bytes, const BudgetPolicy& policy);
 
 // nullopt: nothing may start now (or another process claimed the pick first;
 // the next round tries again).
 std::optional<ClaimedJob> claim_within_budget(Store& store, std::optional<long long> study, const std::string& owner,
                                               const BudgetUse& in_use, const BudgetPolicy& policy,
-                                              HeadReservation& reservation);
+                                              HeadReservation& reservation, const NeedOf& need = {});
 
 }  // namespace gridfree

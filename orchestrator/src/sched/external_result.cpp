@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 
 #include "sched/job_timeout.h"
@@ -31,22 +32,34 @@ void note_external_result(const ClaimedJob& job, ResultRow& row) {
   if (row.cells == std::array<int, 3>{}) row.cells = job.cells;
 }
 
-std::map<std::string, double> declared_cpu_s_per_cell(const nlohmann::json& definition) {
-  std::map<std::string, double> out;
+std::map<std::string, DeclaredCost> declared_external_costs(const nlohmann::json& definition) {
+  std::map<std::string, DeclaredCost> out;
   if (!definition.is_object() || !definition.contains("cases") || !definition["cases"].is_object()) return out;
   for (const auto& [name, c] : definition["cases"].items()) {
-    const auto p = nlohmann::json::json_pointer("/external/cost/cpu_s_per_cell");
-    if (c.is_object() && c.contains(p) && c.at(p).is_number()) out[name] = c.at(p).get<double>();
+    if (!c.is_object() || !c.contains("external")) continue;
+    DeclaredCost& d = out[name];
+    const auto cpu = nlohmann::json::json_pointer("/external/cost/cpu_s_per_cell");
+    const auto mb = nlohmann::json::json_pointer("/external/cost/mb_per_cell");
+    if (c.contains(cpu) && c.at(cpu).is_number()) d.cpu_s_per_cell = c.at(cpu).get<double>();
+    if (c.contains(mb) && c.at(mb).is_number()) d.mb_per_cell = c.at(mb).get<double>();
   }
   return out;
 }
 
-double external_job_timeout_s(const ClaimedJob& job, const std::map<std::string, double>& cpu_s_per_cell) {
+ExternalJobCost external_claimed_cost(const ClaimedJob& job, const std::map<std::string, DeclaredCost>& declared,
+                                      const CostHistory& history) {
   const std::string name = job.spec["case"].value("name", "");
-  const auto it = cpu_s_per_cell.find(name);
-  if (it == cpu_s_per_cell.end()) return 0;  // unknown cost: no default timeout
+  const auto d = declared.find(name);
+  const auto h = history.find(cost_similarity_key(job.spec));
   const double cells = static_cast<double>(job.cells[0]) * job.cells[1] * job.cells[2];
-  return std::max(kMinJobTimeoutS, kJobTimeoutMargin * it->second * cells);
+  return external_job_estimate(d == declared.end() ? std::nullopt : d->second.cpu_s_per_cell,
+                               d == declared.end() ? std::nullopt : d->second.mb_per_cell,
+                               h == history.end() ? nullptr : &h->second, cells);
+}
+
+double external_job_timeout_s(const ExternalJobCost& cost) {
+  if (!std::isfinite(cost.cpu_s)) return 0;  // unknown cost: no default timeout
+  return std::max(kMinJobTimeoutS, kJobTimeoutMargin * cost.cpu_s);
 }
 
 std::string converged_message(const ResultRow& row) {

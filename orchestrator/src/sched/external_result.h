@@ -3,11 +3,13 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "store/store.h"
+#include "study/external_plan.h"
 
 namespace gridfree {
 
@@ -22,14 +24,26 @@ void note_collect_spec(const nlohmann::json& spec, ResultRow& row);
 // not know them), so the measured cost history has its cell counts.
 void note_external_result(const ClaimedJob& job, ResultRow& row);
 
-// Case name → external.cost.cpu_s_per_cell of a study definition.
-std::map<std::string, double> declared_cpu_s_per_cell(const nlohmann::json& definition);
+// An external case's declared cost figures (external.cost).
+struct DeclaredCost {
+  std::optional<double> cpu_s_per_cell, mb_per_cell;
+};
+// Case name → its declared cost (only external cases; none declared: empty fields).
+std::map<std::string, DeclaredCost> declared_external_costs(const nlohmann::json& definition);
 
-// An external job's default timeout: kJobTimeoutMargin × declared CPU s per
-// cell × cells, at least kMinJobTimeoutS (sched/job_timeout.h); none (0)
-// without a declared figure: gridfree cannot guess another code's run time
-// (give --timeout or the study's timeout_s).
-double external_job_timeout_s(const ClaimedJob& job, const std::map<std::string, double>& cpu_s_per_cell);
+// An external job's CPU and memory estimate (study/external_plan.h): its
+// case's declared figures, else the measured history of the case
+// (`history`: sched/cost_history.h, grouped by cost_similarity_key), else
+// unknown (NaN).
+ExternalJobCost external_claimed_cost(const ClaimedJob& job, const std::map<std::string, DeclaredCost>& declared,
+                                      const CostHistory& history);
+
+// An external job's default timeout: kJobTimeoutMargin × its estimated CPU
+// seconds (declared per cell × cells, else from the case's history), at
+// least kMinJobTimeoutS (sched/job_timeout.h); none (0) when unknown:
+// gridfree cannot guess another code's run time (give --timeout or the
+// study's timeout_s).
+double external_job_timeout_s(const ExternalJobCost& cost);
 
 // "converged dp* = 1.234 (2.0 s)", or for an external result
 // "converged kinetic_energy = 0.0672, ux_probe = 0.11 (2.0 s)".

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -13,6 +14,7 @@
 #include "exec/local_executor.h"
 #include "job/memory_estimate.h"
 #include "sched/budget_claim.h"
+#include "sched/cost_history.h"
 #include "sched/external_result.h"
 #include "sched/job_timeout.h"
 #include "study/cost_model.h"
@@ -64,11 +66,22 @@ std::string job_label(Store& store, const ClaimedJob& job) {
   return label + cells;
 }
 
-// "<study>/<series label> d*=<Δ*>": what a queue listing shows for the job.
+// "<study>/<series label> d*=<Δ*>": what a queue listing shows for the job;
+// an external job's "<study>/<case> <quantities> h=<h>" (docs/EXTERNAL.md).
 std::string job_name(Store& store, const ClaimedJob& job, const std::string& label) {
   auto st = store.db().prepare("SELECT s.name, COALESCE(j.delta_star, 0) FROM studies s, jobs j WHERE s.id = ? AND j.id = ?");
   st.bind_all(job.study_id, job.job_id);
   if (!st.step()) return label;
+  if (is_external_job(job.spec)) {
+    std::string quantities;
+    const auto q = nlohmann::json::json_pointer("/case/external/collect/quantities");
+    if (job.spec.contains(q) && job.spec.at(q).is_object())
+      for (const auto& [name, spec] : job.spec.at(q).items()) quantities += (quantities.empty() ? " " : ",") + name;
+    const std::string case_name = job.spec["case"].value("name", "");
+    char h[48];
+    std::snprintf(h, sizeof h, " h=%g", job.spec.value("/numerics/grid/h"_json_pointer, 0.0));
+    return st.as_text(0) + "/" + case_name + quantities + h;
+  }
   char d[32];
   std::snprintf(d, sizeof d, "%g", st.as_double(1));
   return st.as_text(0) + "/" + label.substr(0, label.rfind(' ')) + " d*=" + d;
@@ -121,7 +134,8 @@ ProgressTally progress_tally(Store& store, const SchedulerOptions& o) {
 struct StudyFacts {
   std::optional<double> timeout_s;  // the definition's timeout_s
   bool adaptive = false;            // adaptive grids (study/adaptive_grids.h)
-  std::map<std::string, double> external_cpu_s_per_cell;  // external cases' declared cost (sched/external_result.h)
+  bool external = false;            // its cases are external (docs/EXTERNAL.md)
+  std::map<std::string, DeclaredCost> external_costs;  // external cases' declared cost (sched/external_result.h)
 };
 
 class StudyFactsCache {
@@ -135,7 +149,8 @@ class StudyFactsCache {
     if (d.is_object())
       if (const auto t = d.find("timeout_s"); t != d.end() && t->is_number()) f.timeout_s = t->get<double>();
     f.adaptive = adaptive_grids_of(d).has_value();
-    f.external_cpu_s_per_cell = declared_cpu_s_per_cell(d);
+    f.external_costs = declared_external_costs(d);
+    f.external = !f.external_costs.empty();
     return facts_.emplace(study_id, f).first->second;
   }
 
@@ -145,13 +160,62 @@ class StudyFactsCache {
 };
 
 // A job's wall-clock limit: --timeout when given (0 = none), else the
-// study's timeout_s, else the default derived from the cost model.
-double job_timeout_s(const SchedulerOptions& o, const StudyFacts& facts, const ClaimedJob& job) {
+// study's timeout_s, else the default derived from the cost model (an
+// external job: from its estimate, `cost`).
+double job_timeout_s(const SchedulerOptions& o, const StudyFacts& facts, const ClaimedJob& job,
+                     const std::optional<ExternalJobCost>& cost) {
   if (o.timeout_s >= 0) return o.timeout_s;
   if (facts.timeout_s) return *facts.timeout_s;
-  if (is_external_job(job.spec)) return external_job_timeout_s(job, facts.external_cpu_s_per_cell);
+  if (cost) return external_job_timeout_s(*cost);
   return default_job_timeout_s(job.cells, o.threads_per_job, apriori_cost_ratio(job.spec, job.cells).ratio);
 }
+
+// Estimates of external jobs (study/external_plan.h): the declared figures
+// of their study, else the measured history of their case, read from the
+// database once and extended as this loop's jobs finish.
+class ExternalEstimates {
+ public:
+  ExternalEstimates(Store& store, StudyFactsCache& facts) : store_(store), facts_(facts) {}
+  std::optional<ExternalJobCost> of(const ClaimedJob& job) {
+    if (!is_external_job(job.spec)) return std::nullopt;
+    return external_claimed_cost(job, facts_.of(job.study_id).external_costs, history());
+  }
+  // need(job) of the budget: the worker's model for gridfree's own jobs.
+  double need(const ClaimedJob& job) {
+    const auto c = of(job);
+    return c ? c->memory_bytes : job_memory_estimate_bytes(job.cells);
+  }
+  double need(long long study_id, long long job_id, const std::array<int, 3>& cells) {
+    if (!facts_.of(study_id).external) return job_memory_estimate_bytes(cells);
+    auto st = store_.db().prepare("SELECT spec_json FROM jobs WHERE id = ?");
+    st.bind_all(job_id);
+    if (!st.step()) return job_memory_estimate_bytes(cells);
+    ClaimedJob job;
+    job.job_id = job_id;
+    job.study_id = study_id;
+    job.spec = nlohmann::json::parse(st.as_text(0), nullptr, false);
+    job.cells = cells;
+    return need(job);
+  }
+  // A finished external job's measurement, for the jobs that follow.
+  void finished(const ClaimedJob& job, const ResultRow& row) {
+    if (!is_external_job(job.spec) || row.status != "converged" || !(row.cpu_s > 0 || row.peak_rss_mb > 0)) return;
+    const double cells = static_cast<double>(job.cells[0]) * job.cells[1] * job.cells[2];
+    history()[cost_similarity_key(job.spec)].push_back({cells, row.cpu_s, row.peak_rss_mb});
+  }
+
+ private:
+  CostHistory& history() {
+    if (!history_) history_ = read_cost_history(store_.db(), true);
+    return *history_;
+  }
+  Store& store_;
+  StudyFactsCache& facts_;
+  std::optional<CostHistory> history_;
+};
+
+// "memory unknown (...)": why an external job's memory is not counted.
+std::string unknown_memory_note(const ExternalJobCost& c) { return "memory " + c.memory_basis; }
 
 }  // namespace
 
@@ -192,12 +256,16 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
                                const std::vector<ClaimedJob>& adopted) {
   SchedulerSummary sum;
   std::map<long long, InFlight> running;
-  for (const auto& job : adopted)
-    running.emplace(job.job_id, InFlight{job, job_label(store, job), job_memory_estimate_bytes(job.cells)});
   const BudgetPolicy policy{o.memory_budget_bytes, o.workers, std::max(1, o.workers)};
+  StudyFactsCache facts(store);
+  ExternalEstimates estimates(store, facts);
+  for (const auto& job : adopted)
+    running.emplace(job.job_id, InFlight{job, job_label(store, job), counted_need(estimates.need(job), policy)});
+  const NeedOf need = [&estimates](long long study_id, long long job_id, const std::array<int, 3>& cells) {
+    return estimates.need(study_id, job_id, cells);
+  };
   HeadReservation reservation;
   ProgressTally tally = progress_tally(store, o);
-  StudyFactsCache facts(store);
   auto record_updates = [&] {
     for (const auto& u : executor.take_updates()) store.set_queue_state(u.job_id, u.external_id, u.state, u.reason);
   };
@@ -239,18 +307,27 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     if (o.stop_requested()) break;
     // 1. start while there is capacity
     while (static_cast<int>(running.size()) < o.workers && !o.stop_requested()) {
-      auto job = claim_within_budget(store, o.study, o.owner, budget_use(running), policy, reservation);
+      auto job = claim_within_budget(store, o.study, o.owner, budget_use(running), policy, reservation, need);
       if (!job) break;
-      InFlight f{*job, job_label(store, *job), job_memory_estimate_bytes(job->cells)};
-      if (o.memory_budget_bytes > 0 && f.memory_bytes > o.memory_budget_bytes)
+      const std::optional<ExternalJobCost> cost = estimates.of(*job);
+      InFlight f{*job, job_label(store, *job),
+                 counted_need(cost ? cost->memory_bytes : job_memory_estimate_bytes(job->cells), policy)};
+      if (o.memory_budget_bytes > 0 && cost && std::isnan(cost->memory_bytes))
+        spdlog::info("{}: {}: it runs alone within the memory budget", f.label, unknown_memory_note(*cost));
+      else if (o.memory_budget_bytes > 0 && f.memory_bytes > o.memory_budget_bytes)
         spdlog::warn("{}: its estimated memory {} exceeds the memory budget {}; it runs alone", f.label,
                      memory_text(f.memory_bytes), memory_text(o.memory_budget_bytes));
       JobLaunch launch;
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
       launch.threads = o.threads_per_job;
-      launch.timeout_s = job_timeout_s(o, facts.of(job->study_id), *job);
+      launch.timeout_s = job_timeout_s(o, facts.of(job->study_id), *job, cost);
       launch.cells = job->cells;
+      if (cost) {  // an external code: gridfree's model does not describe it (exec/executor.h)
+        launch.external = true;
+        launch.memory_bytes = cost->memory_bytes;
+        launch.memory_basis = cost->memory_basis;
+      }
       launch.name = job_name(store, *job, f.label);
       try {
         launch.run_dir = prepare_run_dir(o.runs_root, job->job_hash, job->spec.dump(2));
@@ -301,6 +378,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     bool failed = true;  // logged at warn unless converged or released
     if (out.kind == OutcomeKind::kFinal) {
       note_external_result(f.job, out.row);  // external jobs: cells, what the quantities were read with
+      estimates.finished(f.job, out.row);
       if (store.record_result(f.job.job_id, o.owner, out.row)) remove_checkpoint(exit->run_dir);
       ++sum.finished;
       tally.job_finished(out.row.status == "converged", out.row.wall_s);

@@ -69,10 +69,12 @@ CostRatio apriori_cost_ratio(const nlohmann::json& job_doc, const std::array<int
 // and the drag law (canonical JSON text).
 std::string cost_similarity_key(const nlohmann::json& job_doc);
 
-// One finished job: its cell count and measured CPU seconds.
+// One finished job: its cell count, measured CPU seconds and peak memory
+// (MiB, the worker's peak RSS; 0 when not recorded).
 struct CostSample {
   double cells = 0;
   double cpu_s = 0;
+  double peak_rss_mb = 0;
 };
 using CostHistory = std::map<std::string, std::vector<CostSample>>;  // by similarity key
 

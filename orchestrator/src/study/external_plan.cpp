@@ -31,27 +31,91 @@ double fit_cpu_seconds(const std::vector<CostSample>& samples, double cells, dou
   return std::exp(my + b * (std::log(cells) - mx));
 }
 
-ExternalJobCost external_job_cost(const ExternalCase& c, const nlohmann::json& job_doc, double cells,
-                                  const CostHistory& history) {
+double fit_memory_mb(const std::vector<CostSample>& samples, double cells) {
+  std::vector<std::pair<double, double>> xy;  // cells, MiB
+  for (const auto& s : samples)
+    if (s.cells > 0 && s.peak_rss_mb > 0 && std::isfinite(s.peak_rss_mb)) xy.emplace_back(s.cells, s.peak_rss_mb);
+  if (xy.empty() || !(cells > 0)) return NAN;
+  double mx = 0, my = 0;
+  for (const auto& [x, y] : xy) {
+    mx += x;
+    my += y;
+  }
+  mx /= static_cast<double>(xy.size());
+  my /= static_cast<double>(xy.size());
+  double sxx = 0, sxy = 0;
+  for (const auto& [x, y] : xy) {
+    sxx += (x - mx) * (x - mx);
+    sxy += (x - mx) * (y - my);
+  }
+  double fit = 0;
+  if (sxx <= 1e-12 * mx * mx) {
+    fit = my * std::max(1.0, cells / mx);  // one size: its peak, proportional to cells above it
+  } else {
+    double b = sxy / sxx, a = my - b * mx;
+    if (b < 0) {  // memory falling with cells: noise; the largest peak
+      b = 0;
+      a = 0;
+      for (const auto& [x, y] : xy) a = std::max(a, y);
+    } else if (a < 0) {  // through the origin
+      double sxy0 = 0, sxx0 = 0;
+      for (const auto& [x, y] : xy) {
+        sxy0 += x * y;
+        sxx0 += x * x;
+      }
+      a = 0;
+      b = sxy0 / sxx0;
+    }
+    fit = a + b * cells;
+  }
+  for (const auto& [x, y] : xy)
+    if (x <= cells) fit = std::max(fit, y);  // never below a measured peak at as many cells or fewer
+  return fit;
+}
+
+ExternalJobCost external_job_estimate(std::optional<double> cpu_s_per_cell, std::optional<double> mb_per_cell,
+                                      const std::vector<CostSample>* samples, double cells) {
   ExternalJobCost out;
-  if (c.mb_per_cell) out.memory_bytes = *c.mb_per_cell * cells * 1024 * 1024;
-  if (c.cpu_s_per_cell) {
-    out.cpu_s = *c.cpu_s_per_cell * cells;
-    out.basis = "declared " + format_number("%.3g", *c.cpu_s_per_cell) + " CPU s per cell";
+  const std::size_t measured = samples == nullptr ? 0 : samples->size();
+  if (mb_per_cell) {
+    out.memory_bytes = *mb_per_cell * cells * 1024 * 1024;
+    out.memory_basis = "declared " + format_number("%.3g", *mb_per_cell) + " MB per cell";
+  } else if (const double mb = measured > 0 ? fit_memory_mb(*samples, cells) : NAN; std::isfinite(mb)) {
+    out.memory_bytes = kExternalMemorySafety * mb * 1024 * 1024;
+    double largest = 0, at = 0;
+    for (const auto& s : *samples)
+      if (s.peak_rss_mb > largest) {
+        largest = s.peak_rss_mb;
+        at = s.cells;
+      }
+    out.memory_basis = "history: peak memory of " + std::to_string(measured) + " finished job(s) of the case (largest " +
+                       format_number("%.0f", largest) + " MiB at " + format_number("%.0f", at) +
+                       " cells), a + b·cells x " + format_number("%g", kExternalMemorySafety);
+  } else {
+    out.memory_basis = "unknown (no cost.mb_per_cell and no finished job of the case yet)";
+  }
+  if (cpu_s_per_cell) {
+    out.cpu_s = *cpu_s_per_cell * cells;
+    out.basis = "declared " + format_number("%.3g", *cpu_s_per_cell) + " CPU s per cell";
     return out;
   }
-  const auto it = history.find(cost_similarity_key(job_doc));
-  if (it != history.end() && !it->second.empty()) {
+  if (measured > 0) {
     double b = 1;
-    out.cpu_s = fit_cpu_seconds(it->second, cells, &b);
+    out.cpu_s = fit_cpu_seconds(*samples, cells, &b);
     if (std::isfinite(out.cpu_s)) {
-      out.basis = "history: " + std::to_string(it->second.size()) + " finished job(s) of the case, CPU s ∝ cells^" +
+      out.basis = "history: " + std::to_string(measured) + " finished job(s) of the case, CPU s ∝ cells^" +
                   format_number("%.2f", b);
       return out;
     }
   }
   out.basis = "unknown (no cost.cpu_s_per_cell and no finished job of the case yet)";
   return out;
+}
+
+ExternalJobCost external_job_cost(const ExternalCase& c, const nlohmann::json& job_doc, double cells,
+                                  const CostHistory& history) {
+  const auto it = history.find(cost_similarity_key(job_doc));
+  return external_job_estimate(c.cpu_s_per_cell, c.mb_per_cell, it == history.end() ? nullptr : &it->second, cells);
 }
 
 Plan make_external_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
@@ -79,6 +143,7 @@ Plan make_external_plan(const Study& study, const ExpandedStudy& expanded, int w
     row.memory_bytes = row.grids == 1 ? cost.memory_bytes : std::max(row.memory_bytes, cost.memory_bytes);
     row.seconds = row.grids == 1 ? cost.cpu_s : row.seconds + cost.cpu_s;  // NaN stays NaN: unknown
     row.cost_basis = cost.basis;
+    row.memory_basis = cost.memory_basis;
     row.cost_source = cost.basis.rfind("history", 0) == 0 ? CostSource::kHistory : CostSource::kAPriori;
     row.cost_ratio_min = row.cost_ratio_max = 1;
   }

@@ -26,6 +26,7 @@ std::vector<GridRow> grid_listing(const Study& study) {
         r.index = i;
         r.pointer = "/grids/variables level " + std::to_string(i);
         r.actual = g.h;
+        r.h_meaning = c.external->h_meaning;
         r.cell_count = g.cells ? static_cast<std::uint64_t>(std::max(1.0, std::round(*g.cells))) : 0;
         r.cells = {static_cast<int>(std::min<std::uint64_t>(r.cell_count, 2000000000)), 1, 1};
         rows.push_back(r);
@@ -58,11 +59,13 @@ std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows, do
     std::sort(g.begin(), g.end(), [](const GridRow* a, const GridRow* b) { return a->actual < b->actual; });
     for (std::size_t i = 1; i < g.size(); ++i) {
       const double ratio = g[i]->actual / g[i - 1]->actual;
+      const std::string h = g[i]->h_meaning.empty() ? "Δ*" : "h";  // an external case's declared h
       if (ratio < min_ratio)
-        out.push_back("case " + g[i]->case_name + ": " + g[i - 1]->pointer + " (Δ* " + format_number("%.4g", g[i - 1]->actual) +
-                      ") and " + g[i]->pointer + " (Δ* " + format_number("%.4g", g[i]->actual) + ") differ by a ratio of " +
-                      format_number("%.3f", ratio) + " < " + format_number("%g", min_ratio) +
-                      ": their difference is mostly grid-to-grid scatter, not the trend with Δ*");
+        out.push_back("case " + g[i]->case_name + ": " + g[i - 1]->pointer + " (" + h + " " +
+                      format_number("%.4g", g[i - 1]->actual) + ") and " + g[i]->pointer + " (" + h + " " +
+                      format_number("%.4g", g[i]->actual) + ") differ by a ratio of " + format_number("%.3f", ratio) +
+                      " < " + format_number("%g", min_ratio) +
+                      ": their difference is mostly grid-to-grid scatter, not the trend with " + h);
     }
     begin = end;
   }
@@ -72,6 +75,19 @@ std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows, do
 std::string grid_listing_table(const std::vector<GridRow>& rows) {
   std::string out;
   char line[256];
+  if (!rows.empty() && !rows.front().h_meaning.empty()) {  // external: h as declared, cells
+    std::snprintf(line, sizeof line, "%-16s %5s %13s %12s\n", "case", "grid", "h", "cells");
+    out += line;
+    std::vector<std::pair<std::string, std::string>> meanings;  // case → its h, in order
+    for (const auto& r : rows) {
+      const std::string cells = r.cell_count > 0 ? std::to_string(r.cell_count) : "-";
+      std::snprintf(line, sizeof line, "%-16s %5zu %13.6g %12s\n", r.case_name.c_str(), r.index, r.actual, cells.c_str());
+      out += line;
+      if (meanings.empty() || meanings.back().first != r.case_name) meanings.emplace_back(r.case_name, r.h_meaning);
+    }
+    for (const auto& [name, meaning] : meanings) out += "h of " + name + ": " + meaning + "\n";
+    return out;
+  }
   // "Δ" is two bytes: its columns are one wider in the header.
   std::snprintf(line, sizeof line, "%-16s %5s %13s %13s %18s %12s\n", "case", "grid", "Δ* requested", "Δ* actual",
                 "nx x ny x nz", "cells");
@@ -89,13 +105,22 @@ std::string grid_listing_table(const std::vector<GridRow>& rows) {
 
 nlohmann::json grid_listing_json(const std::vector<GridRow>& rows) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& r : rows)
+  for (const auto& r : rows) {
+    if (!r.h_meaning.empty()) {  // external
+      out.push_back({{"case", r.case_name},
+                     {"grid", r.index},
+                     {"h", r.actual},
+                     {"h_meaning", r.h_meaning},
+                     {"cell_count", r.cell_count > 0 ? nlohmann::json(r.cell_count) : nlohmann::json(nullptr)}});
+      continue;
+    }
     out.push_back({{"case", r.case_name},
                    {"grid", r.index},
                    {"delta_star_requested", r.requested ? nlohmann::json(*r.requested) : nlohmann::json(nullptr)},
                    {"delta_star", r.actual},
                    {"cells", {r.cells[0], r.cells[1], r.cells[2]}},
                    {"cell_count", r.cell_count}});
+  }
   return out;
 }
 

@@ -30,6 +30,7 @@ struct GridRow {
   double actual = 0;                     // Δ* of the cells
   std::array<int, 3> cells{};
   std::uint64_t cell_count = 0;
+  std::string h_meaning;                 // an external case's: its declared h ("h = 1 / N"); `actual` is h
 };
 
 // Where grid `i` of `study` is written: /grids/delta_star/i or
@@ -46,6 +47,8 @@ std::vector<GridRow> grid_listing(const Study& study);
 std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows,
                                             double min_ratio = kMinNeighbourRatio);
 
+// An external study's table lists h and cells (no Δ*, no nx x ny x nz),
+// with each case's declared meaning of h below it.
 std::string grid_listing_table(const std::vector<GridRow>& rows);
 nlohmann::json grid_listing_json(const std::vector<GridRow>& rows);
 

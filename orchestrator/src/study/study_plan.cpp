@@ -83,7 +83,7 @@ static std::string iterations_model_text() {
 
 nlohmann::json plan_to_json(const Plan& plan) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : plan.rows)
+  for (const auto& r : plan.rows) {
     rows.push_back({{"series", r.series},
                     {"grids", r.grids},
                     {"alignment_jobs", r.alignment_jobs},
@@ -94,6 +94,8 @@ nlohmann::json plan_to_json(const Plan& plan) {
                     {"cost_source", cost_source_name(r.cost_source)},
                     {"cost_ratio", {r.cost_ratio_min, r.cost_ratio_max}},
                     {"cost_basis", r.cost_basis}});
+    if (!r.memory_basis.empty()) rows.back()["memory_basis"] = r.memory_basis;
+  }
   return {{"series", rows},
           {"jobs", plan.jobs},
           {"cells", plan.cells},
@@ -168,6 +170,14 @@ std::string plan_to_table(const Plan& plan) {
     out += "estimated wall time with " + std::to_string(plan.workers) + " workers: " +
            human_seconds(plan.wall_seconds) +
            " (external code: declared cost per cell, or measured history of the case; see the last column)\n";
+    std::vector<std::string> shown;  // each distinct memory basis once, with its first series
+    for (const auto& r : plan.rows)
+      if (!r.memory_basis.empty() && std::find(shown.begin(), shown.end(), r.memory_basis) == shown.end()) {
+        shown.push_back(r.memory_basis);
+        out += "max memory, " + r.series + ": " +
+               (std::isnan(r.memory_bytes) ? r.memory_basis : human_bytes(r.memory_bytes) + " from " + r.memory_basis) +
+               "\n";
+      }
     return out;
   }
   std::snprintf(line, sizeof line,

@@ -56,6 +56,7 @@ struct PlanRow {
   CostSource cost_source = CostSource::kAPriori;  // history when every job's ratio came from it
   double cost_ratio_min = 0, cost_ratio_max = 0;  // r over the series' jobs
   std::string cost_basis;        // of the series' largest grid
+  std::string memory_basis;      // external studies: where memory_bytes comes from (study/external_plan.h)
 };
 
 struct Plan {

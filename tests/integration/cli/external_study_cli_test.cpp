@@ -7,8 +7,10 @@
 // external driver.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -110,6 +112,132 @@ TEST(ExternalStudyCli, ConvergesToTheAnalyticLimitAndRerunsOnlyWhatChanged) {
   const double f0_edited =
       query_number(sqlite_query(db, "SELECT f0 FROM extrapolations WHERE chosen = 1 AND series_id = " + f_series));
   EXPECT_NEAR(f0_edited, 2.0, 1e-9);
+}
+
+std::string ext_first_line(const fs::path& f) {
+  std::ifstream in(f);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+std::string ext_file_text(const fs::path& f) {
+  std::ifstream in(f);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path fresh_poly_dir(const std::string& name) {
+  const auto dir = gridfree::test_support::fresh_scratch_dir("external_study_cli_test", name);
+  fs::copy(gridfree::test_support::kSourceDir / "tests/fixtures/external/poly", dir / "poly",
+           fs::copy_options::recursive);
+  std::ofstream(dir / "study.json") << poly_study_doc(dir).dump(2);
+  return dir;
+}
+
+// Memory of an external job (docs/EXTERNAL.md "Cost, timeouts, memory"):
+// never gridfree's own solver model. Without a declared or measured figure
+// the first job runs alone within the memory budget, the smallest grid
+// first; afterwards `plan` shows the measured peak memory's estimate. The
+// plan's grid table and the report name h and the value, not Δ* and DP*.
+TEST(ExternalStudyCli, MemoryIsUnknownUntilMeasuredAndPlanShowsTheMeasuredEstimate) {
+  const auto dir = fresh_poly_dir("memory");
+  const CommandRun first = run_in(dir, "run study.json -j 2 --db g.sqlite --memory-budget 4G", kRealWorker);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  // The smallest grid (N = 4, h = 0.25) probes alone: the largest would be first by the budget's rule otherwise.
+  EXPECT_EQ(ext_first_line(dir / "runs.txt"), "run h=0.25");
+  EXPECT_NE(first.err.find("memory unknown (no cost.mb_per_cell and no finished job of the case yet): it runs alone"),
+            std::string::npos)
+      << first.err;
+  const double peak = query_number(sqlite_query(dir / "g.sqlite", "SELECT MAX(peak_rss_mb) FROM results"));
+  ASSERT_GT(peak, 0);
+  // The report speaks of h and the value, not of Δ* and DP* (docs/REPORTS.md).
+  const std::string md = ext_file_text(dir / "reports/poly/report.md");
+  EXPECT_EQ(md.find("Δ*"), std::string::npos) << md;
+  EXPECT_EQ(md.find("DP*"), std::string::npos) << md;
+  for (const char* csv : {"grids.csv", "failures.csv", "cost.csv", "stability.csv"}) {
+    const std::string header = ext_first_line(dir / "reports/poly" / csv);
+    EXPECT_EQ(header.find("delta_star"), std::string::npos) << csv << ": " << header;
+    EXPECT_EQ(header.find("dp_star"), std::string::npos) << csv << ": " << header;
+  }
+  EXPECT_NE(ext_first_line(dir / "reports/poly/grids.csv").find(",h,"), std::string::npos);
+  EXPECT_NE(ext_first_line(dir / "reports/poly/grids.csv").find(",value,"), std::string::npos);
+
+  const CommandRun plan = run_in(dir, "plan study.json --db g.sqlite", kRealWorker);
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_NE(plan.out.find("max memory, poly f: "), std::string::npos) << plan.out;
+  EXPECT_NE(plan.out.find("from history: peak memory of 5 finished job(s) of the case"), std::string::npos) << plan.out;
+  // The grid table: h as declared and cells, no Δ* and no "nx x ny x nz".
+  EXPECT_NE(plan.out.find("h of poly: h = 1 / N"), std::string::npos) << plan.out;
+  EXPECT_EQ(plan.out.find("nx x ny x nz"), std::string::npos) << plan.out;
+  EXPECT_EQ(plan.out.find("Δ*"), std::string::npos) << plan.out;
+  const CommandRun json = run_in(dir, "plan study.json --db g.sqlite --json", kRealWorker);
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const auto j = nlohmann::json::parse(json.out);
+  // The largest grid's estimate: at least the safety factor (1.5) x every measured peak
+  // (the fit never falls below a measured peak at as many cells or fewer).
+  const double mb = j["series"][0]["memory_bytes"].get<double>() / (1024.0 * 1024.0);
+  EXPECT_GE(mb, 1.5 * peak * (1 - 1e-12));
+  EXPECT_EQ(j["grids"][0]["h_meaning"], "h = 1 / N");
+  EXPECT_EQ(j["grids"][0]["cell_count"], 16);
+}
+
+// Fake sbatch: logs its arguments to dir/sbatch_args and runs every task of
+// the array at once; squeue lists nothing, so the exit_code files tell.
+fs::path external_fake_slurm(const fs::path& dir) {
+  const auto bin = dir / "bin";
+  fs::create_directories(bin);
+  auto script = [&](const std::string& name, const std::string& body) {
+    std::ofstream(bin / name) << "#!/bin/sh\n" << body;
+    fs::permissions(bin / name, fs::perms::owner_all);
+  };
+  script("sbatch", "echo \"$@\" >> " + shell_quote((dir / "sbatch_args").string()) +
+                       "\nlast=0; for a; do case $a in --array=0-*) last=${a#--array=0-}; last=${last%%%*} ;; esac; "
+                       "script=$a; done\n"
+                       "i=0; while [ $i -le $last ]; do SLURM_ARRAY_TASK_ID=$i sh \"$script\" >/dev/null 2>&1; "
+                       "i=$((i + 1)); done\necho \"7$i;cluster\"\n");
+  script("squeue", "exit 0\n");
+  script("scancel", "exit 0\n");
+  return bin;
+}
+
+// Slurm's --mem and --time for an external code: none (and said so) before
+// anything of the case was measured, then from the measured history (also
+// for the later submissions of the same run); the job name names the case,
+// its quantities and h, not Δ*.
+TEST(ExternalStudyCli, SlurmMemoryAndTimeComeFromTheCaseAndTheJobNameSaysH) {
+  const auto dir = fresh_poly_dir("slurm");
+  const auto bin = external_fake_slurm(dir);
+  const char* path = std::getenv("PATH");
+  const std::string env = "PATH=" + shell_quote(bin.string() + ":" + (path ? path : "/usr/bin:/bin"));
+  const auto slurm = [&](const std::string& args) {
+    return gridfree_in(dir, args, "GRIDFREE_WORKER=" + shell_quote(kRealWorker.string()) + " " + env);
+  };
+  const CommandRun r1 = slurm("run study.json -j 2 --db s.sqlite --executor slurm");
+  ASSERT_EQ(r1.exit_code, 0) << r1.err;
+  // The first submission (the smallest grids first): nothing measured yet.
+  const std::string args1 = ext_first_line(dir / "sbatch_args");
+  EXPECT_EQ(args1.find("--mem="), std::string::npos) << args1;
+  EXPECT_EQ(args1.find("--time="), std::string::npos) << args1;
+  EXPECT_NE(args1.find("--job-name=poly/poly_f_h=0.25"), std::string::npos) << args1;
+  EXPECT_EQ(ext_file_text(dir / "sbatch_args").find("d*="), std::string::npos);
+  EXPECT_NE(r1.err.find("memory not given, the cluster's default (external code"), std::string::npos) << r1.err;
+  EXPECT_NE(r1.err.find("time limit not given, the cluster's default (external code"), std::string::npos) << r1.err;
+
+  // One more grid: its job's limits come from the five measured ones.
+  auto doc = poly_study_doc(dir);
+  doc["grids"]["variables"]["N"] = {4, 6, 8, 12, 16, 24};
+  std::ofstream(dir / "study.json") << doc.dump(2);
+  fs::remove(dir / "sbatch_args");
+  const CommandRun r2 = slurm("run study.json -j 2 --db s.sqlite --executor slurm --replace");
+  ASSERT_EQ(r2.exit_code, 0) << r2.err;
+  const std::string args2 = ext_first_line(dir / "sbatch_args");
+  EXPECT_NE(args2.find("--mem="), std::string::npos) << args2;
+  EXPECT_NE(args2.find("--time="), std::string::npos) << args2;
+  EXPECT_NE(args2.find("--job-name=poly/poly_f_h=0.0416667"), std::string::npos) << args2;
+  EXPECT_NE(r2.err.find("from the case's measured peak memory x 1.5 x 3"), std::string::npos) << r2.err;
+  EXPECT_NE(r2.err.find("from the job timeout + 1 min"), std::string::npos) << r2.err;
 }
 
 }  // namespace

@@ -62,5 +62,36 @@ TEST(ExternalPlan, DeclaredThenHistoryThenUnknown) {
   EXPECT_EQ(human_bytes(NAN), "unknown");
 }
 
+TEST(ExternalPlan, MemoryFromDeclaredThenMeasuredPeakThenUnknown) {
+  // Peak = 40 MiB + 0.01 MiB per cell at three sizes: the fit is the law,
+  // times the safety factor.
+  std::vector<CostSample> samples;
+  for (double c : {400.0, 1600.0, 6400.0}) samples.push_back({c, 1, 40 + 0.01 * c});
+  EXPECT_NEAR(fit_memory_mb(samples, 25600), 40 + 256, 1e-9);
+  // One measured size: its peak, scaled up with cells above it, never down.
+  EXPECT_NEAR(fit_memory_mb({{400, 1, 50}}, 1600), 200, 1e-12);
+  EXPECT_NEAR(fit_memory_mb({{400, 1, 50}}, 100), 50, 1e-12);
+  // Noise making memory fall with cells: the largest peak, not a fit below it.
+  EXPECT_NEAR(fit_memory_mb({{400, 1, 60}, {1600, 1, 55}}, 3200), 60, 1e-12);
+  // Samples without a recorded peak do not count.
+  EXPECT_TRUE(std::isnan(fit_memory_mb({{400, 1, 0}}, 1600)));
+
+  ExternalCase c;
+  const json job = external_plan_job(40);
+  CostHistory history;
+  history[cost_similarity_key(job)] = samples;
+  const ExternalJobCost measured = external_job_cost(c, job, 25600, history);
+  EXPECT_NEAR(measured.memory_bytes, kExternalMemorySafety * 296 * 1024 * 1024, 1e-3);
+  EXPECT_EQ(measured.memory_basis.rfind("history", 0), 0u) << measured.memory_basis;
+  // Declared wins; nothing: unknown, said so (never gridfree's own model).
+  c.mb_per_cell = 0.5;
+  EXPECT_NEAR(external_job_cost(c, job, 1600, history).memory_bytes, 800.0 * 1024 * 1024, 1e-3);
+  EXPECT_EQ(external_job_cost(c, job, 1600, history).memory_basis.rfind("declared", 0), 0u);
+  c.mb_per_cell.reset();
+  const ExternalJobCost none = external_job_cost(c, job, 1600, {});
+  EXPECT_TRUE(std::isnan(none.memory_bytes));
+  EXPECT_NE(none.memory_basis.find("unknown"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace gridfree
