@@ -75,6 +75,24 @@ SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy&
   return r;
 }
 
+// Finished external jobs whose collect section changed: read again from
+// their run folders, not rerun (sched/recollect.h).
+void recollect_finished_jobs(Store& store, long long study_id, const std::filesystem::path& runs_root) {
+  const RecollectSummary rc = recollect_study(store, study_id, default_worker_path(), runs_root);
+  if (rc.recollected > 0) spdlog::info("re-collected {} finished job(s) with the study's collect section", rc.recollected);
+  if (rc.failed > 0)
+    spdlog::warn("{} job(s) could not be re-collected (their previous values stay; `gridfree run` or a starting "
+                 "`gridfree daemon` tries again): {}",
+                 rc.failed, rc.first_error);
+}
+
+bool external_definition(const nlohmann::json& d) {
+  if (!d.is_object() || !d.contains("cases") || !d["cases"].is_object()) return false;
+  for (const auto& [name, c] : d["cases"].items())
+    if (c.is_object() && c.contains("external")) return true;
+  return false;
+}
+
 int run_study(const RunOptions& ro) {
   // 1. Validate before touching the database.
   const Study study = parse_study(ro.study_file);
@@ -91,12 +109,7 @@ int run_study(const RunOptions& ro) {
   // 2. Submit (or resume).
   Store store(ro.db, true);
   const SubmitResult sub = submit_study(store, study, ex, ro.replace);
-  if (study.external()) {  // finished jobs whose collect section changed: read again, not rerun
-    const RecollectSummary rc = recollect_study(store, sub.study_id, default_worker_path(), options.runs_root);
-    if (rc.recollected > 0) spdlog::info("re-collected {} finished job(s) with the study's collect section", rc.recollected);
-    if (rc.failed > 0)
-      spdlog::warn("{} job(s) could not be re-collected (their previous values stay): {}", rc.failed, rc.first_error);
-  }
+  if (study.external()) recollect_finished_jobs(store, sub.study_id, options.runs_root);
   const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
   recover_stale_jobs(store);
   // 3. Work the study until it is done.
@@ -170,6 +183,7 @@ void add_submit_command(CLI::App& app, int& exit_code) {
     const ExpandedStudy ex = expand(study);
     Store store(*db, true);
     const SubmitResult r = submit_study(store, study, ex, *replace);
+    if (study.external()) recollect_finished_jobs(store, r.study_id, runs_root_for(*db));
     if (r.uncancelled)
       std::cout << "requeued cancelled study " << study.name << ": " << r.jobs_requeued
                 << " cancelled job(s) queued again (" << r.jobs_total << " jobs in all)\n";
@@ -203,6 +217,10 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
     auto executor = make_executor(*executor_flags, *db, *jobs, options);
     const auto store_ptr = open_existing_store(*db);
     Store& store = *store_ptr;
+    // External studies whose collect section changed after their jobs
+    // finished (a submit that could not re-collect): read again now.
+    for (long long id : store.active_studies())
+      if (external_definition(store.study_definition(id))) recollect_finished_jobs(store, id, options.runs_root);
     const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
     recover_stale_jobs(store);
     StopSignals signals;

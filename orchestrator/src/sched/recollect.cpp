@@ -13,7 +13,17 @@ RecollectSummary recollect_study(Store& store, long long study_id, const std::fi
   RecollectSummary sum;
   for (const auto& job : store.jobs_to_recollect(study_id)) {
     // job.json now holds the study's collect section; the run's case/ stays.
-    const auto dir = prepare_run_dir(runs_root, job.job_hash, job.spec.dump());
+    // The job's run folder is where it ran (its recorded result path, also
+    // when that run had another --runs-dir), else under runs_root.
+    std::filesystem::path root = runs_root;
+    {
+      auto st = store.db().prepare("SELECT COALESCE(result_path, '') FROM jobs WHERE id = ?");
+      st.bind_all(job.job_id);
+      const std::filesystem::path recorded = st.step() ? std::filesystem::path(st.as_text(0)) : std::filesystem::path();
+      if (!recorded.empty() && recorded.parent_path().filename() == job.job_hash)
+        root = recorded.parent_path().parent_path().parent_path();
+    }
+    const auto dir = prepare_run_dir(root, job.job_hash, job.spec.dump());
     const auto result = dir / "result.json";
     const ProcessOutput p = run_process({worker.string(), "collect", (dir / "job.json").string(), "-o",
                                          result.string(), "--run-dir", dir.string()});

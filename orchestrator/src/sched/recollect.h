@@ -2,7 +2,9 @@
 // study's collect section changed for jobs that are already finished, each
 // is read again from its run folder with `gridfree-worker collect JOB.json
 // -o RESULT.json --run-dir DIR` (no solver run) and the new values are
-// stored (Store::record_recollected).
+// stored (Store::record_recollected). `run` and `submit` re-collect after
+// storing the study; `daemon` when it starts, for the active studies (a
+// submit whose re-collection failed, e.g. without the worker).
 #pragma once
 
 #include <filesystem>

@@ -63,6 +63,12 @@ void Store::record_recollected(long long job_id, const ResultRow& r) {
                 r.status == "converged" ? std::optional<std::string>() : std::optional<std::string>(r.status + ": " + r.reason),
                 job_id)
       .run();
+  // Its series extrapolate again with the new values (a daemon may have
+  // finished them with the old ones after the study was replaced).
+  db_.prepare("UPDATE series SET status = 'queued' WHERE status = 'done' AND id IN "
+              "(SELECT series_id FROM study_jobs WHERE job_id = ?)")
+      .bind_all(job_id)
+      .run();
   db_.prepare("INSERT INTO events(job_id, kind, message) VALUES (?, 'recollect', ?)")
       .bind_all(job_id, r.status + (r.reason.empty() ? "" : ": " + r.reason)).run();
   tx.commit();

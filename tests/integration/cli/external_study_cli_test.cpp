@@ -240,4 +240,36 @@ TEST(ExternalStudyCli, SlurmMemoryAndTimeComeFromTheCaseAndTheJobNameSaysH) {
   EXPECT_NE(r2.err.find("from the job timeout + 1 min"), std::string::npos) << r2.err;
 }
 
+// A changed collect section submitted with `submit --replace` is re-collected
+// there (no solver run); when submit cannot (no worker), a starting daemon does,
+// and the series extrapolate the new values.
+TEST(ExternalStudyCli, SubmitAndDaemonRecollectAChangedCollectSection) {
+  const auto dir = fresh_poly_dir("recollect");
+  const CommandRun first = run_in(dir, "run study.json -j 2 --db g.sqlite", kRealWorker);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ASSERT_EQ(lines_of(dir / "runs.txt"), 5);
+  auto doc = poly_study_doc(dir);
+  doc["cases"]["poly"]["external"]["collect"]["quantities"]["h_read"] = {{"units", "m"}, {"file", "out.dat"}, {"column", 0}};
+  std::ofstream(dir / "study.json") << doc.dump(2);
+  const CommandRun submit = run_in(dir, "submit study.json --db g.sqlite --replace", kRealWorker);
+  ASSERT_EQ(submit.exit_code, 0) << submit.err;
+  EXPECT_NE(submit.err.find("re-collected 5 finished job(s)"), std::string::npos) << submit.err;
+  const std::string h_series = "(SELECT id FROM series WHERE quantity = 'h_read')";
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM v_results WHERE series_id = " + h_series), "5");
+
+  // Another quantity, submitted without a worker: not re-collected, said so; the daemon does it.
+  doc["cases"]["poly"]["external"]["collect"]["quantities"]["f_again"] = {{"units", "J"}, {"file", "out.dat"}, {"column", 1}};
+  std::ofstream(dir / "study.json") << doc.dump(2);
+  const CommandRun blind = run_in(dir, "submit study.json --db g.sqlite --replace", dir / "no-such-worker");
+  ASSERT_EQ(blind.exit_code, 0) << blind.err;
+  EXPECT_NE(blind.err.find("could not be re-collected"), std::string::npos) << blind.err;
+  const CommandRun daemon = gridfree_in(dir, "daemon --db g.sqlite -j 1",
+                                        "GRIDFREE_WORKER=" + shell_quote(kRealWorker.string()) + " timeout -s INT 8");
+  EXPECT_NE(daemon.err.find("re-collected 5 finished job(s)"), std::string::npos) << daemon.err;
+  const std::string g_series = "(SELECT id FROM series WHERE quantity = 'f_again')";
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM v_results WHERE series_id = " + g_series), "5");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT verdict FROM series WHERE quantity = 'f_again'"), "converged");
+  EXPECT_EQ(lines_of(dir / "runs.txt"), 5);  // no solver run
+}
+
 }  // namespace
