@@ -100,6 +100,7 @@ TEST(JobNormalise, AValueOtherThanTheDefaultIsAnotherJob) {
            {"/case/boundaries/y_high/pressure_dyn_cm2", 1},
            {"/numerics/tolerances/filter", 1e-9},
            {"/numerics/stall_window", 100},
+           {"/numerics/stall_remedy", "relax_correction"},
        }) {
     json changed = full;
     changed[json::json_pointer(pointer)] = value;
@@ -133,6 +134,22 @@ TEST(JobNormalise, SscpGeneratorDefaults) {
   EXPECT_EQ(job_hash(a), job_hash(b));
   b["case"]["particles"]["generator"]["relaxation_sweeps"] = 5;
   EXPECT_NE(job_hash(a), job_hash(b));
+}
+
+// numerics.stall_remedy came after job hashes: its default is written by
+// leaving it out, so every job from before it keeps its hash.
+TEST(JobNormalise, StallRemedyNoneIsTheJobFromBeforeTheField) {
+  const json before = defaults_written();
+  json none = before;
+  none["numerics"]["stall_remedy"] = schema_default("/stall_remedy/default");
+  ASSERT_EQ(none["numerics"]["stall_remedy"], "none");
+  EXPECT_EQ(job_hash(none), job_hash(before));
+  EXPECT_EQ(job_hash(none), job_hash_before_defaults(before));
+  EXPECT_EQ(job_hash(test::contract_job()), job_hash([] {
+              json j = test::contract_job();
+              j["numerics"]["stall_remedy"] = "none";
+              return j;
+            }()));
 }
 
 TEST(JobNormalise, TheHashIsShaOfTheCanonicalNormalisedDocument) {

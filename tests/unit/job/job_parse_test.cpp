@@ -147,6 +147,21 @@ TEST(ParseJob, StallWindowIsReadAndOutOfRangeRefused) {
   }
 }
 
+TEST(ParseJob, StallRemedyIsReadAndNeedsAStallWindow) {
+  json j = test::contract_job();
+  EXPECT_FALSE(parse_job(j, ".").numerics.relax_stalled_correction);
+  j["numerics"]["stall_window"] = 200;
+  j["numerics"]["stall_remedy"] = "relax_correction";
+  EXPECT_TRUE(parse_job(j, ".").numerics.relax_stalled_correction);
+  j["numerics"]["stall_remedy"] = "none";
+  EXPECT_FALSE(parse_job(j, ".").numerics.relax_stalled_correction);
+  j["numerics"]["stall_remedy"] = "freeze_limiter";
+  EXPECT_TRUE(has_problem(problems_of(j), "/numerics/stall_remedy"));
+  j["numerics"]["stall_remedy"] = "relax_correction";
+  j["numerics"]["stall_window"] = 0;  // the remedy acts when the stall rule fires
+  EXPECT_TRUE(has_problem(problems_of(j), "/numerics/stall_remedy"));
+}
+
 TEST(ParseJob, CollectsSemanticProblemsTogether) {
   json j = test::contract_job();
   j["case"]["probes"]["pressure_drop"]["y2_dp"] = 300;                       // outside L_y* = 200

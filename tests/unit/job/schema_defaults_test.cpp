@@ -34,6 +34,9 @@ TEST(SchemaDefaults, AreTheParserDefaults) {
   EXPECT_EQ(job.numerics.max_iterations, d["max_iterations"]["default"].get<int>());
   EXPECT_FALSE(j["numerics"].contains("stall_window"));
   EXPECT_EQ(job.numerics.stall_window, d["stall_window"]["default"].get<int>());
+  EXPECT_FALSE(j["numerics"].contains("stall_remedy"));
+  EXPECT_EQ(d["stall_remedy"]["default"].get<std::string>(), "none");
+  EXPECT_FALSE(job.numerics.relax_stalled_correction);
   const auto gravity = d["case"]["properties"]["gravity_cm_s2"]["default"].get<std::array<double, 3>>();
   EXPECT_EQ(job.case_spec.gravity_cm_s2, gravity);
   EXPECT_EQ(job.case_spec.particle_velocity.thermal_cm_s,

@@ -37,7 +37,7 @@ std::size_t cell_face(const Grid& g, const FaceLayout& lay, std::array<int, 3> x
 
 void assemble_momentum(const FlowProblem& problem, const FlowState& state,
                        const FaceVector& mass_flux, const CellField& divergence, int a,
-                       double relax, MomentumSystem& sys, FaceField& d) {
+                       double relax, MomentumSystem& sys, FaceField& d, CorrectionRelaxation* relaxation) {
   const Grid& g = problem.grid;
   const FaceLayout lay(g, a);
   const FaceField& u = state.u[a];
@@ -58,6 +58,10 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
   // Role of the faces at each position along the normal axis.
   std::vector<FaceRole> role_at(std::size_t(lay.n[a]));
   for (int f = 0; f < lay.n[a]; ++f) role_at[std::size_t(f)] = face_role(g, problem.bc, a, f);
+  // The relaxed correction (relaxation given): the last one per face.
+  std::vector<double>* dc_store = relaxation && tvd ? &relaxation->held[std::size_t(a)] : nullptr;
+  const bool dc_first = dc_store && dc_store->empty();
+  if (dc_first) dc_store->assign(lay.size(), 0.0);
 
 #pragma omp parallel for schedule(static) if (faces > kMinParallel)
   for (long fl = 0; fl < faces; ++fl) {
@@ -79,7 +83,7 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
     xl[a] = fa == 0 ? g.n[a] - 1 : fa - 1;
     if (fa == g.n[a]) xr[a] = g.n[a] - 1;  // unused when !hasR
 
-    double sum_nb = 0, net_out = 0, ap_fold = 0, b = 0, sum_matrix_nb = 0, sum_nb_phi = 0;
+    double sum_nb = 0, net_out = 0, ap_fold = 0, b = 0, sum_matrix_nb = 0, sum_nb_phi = 0, dc = 0;
     for (int bd = 0; bd < 3; ++bd) {
       const FaceLayout& lb = mass_flux[bd].layout;
       for (int side = 0; side < 2; ++side) {
@@ -139,10 +143,17 @@ void assemble_momentum(const FlowProblem& problem, const FlowState& state,
             const double phi_u = u[U];
             const double face = limited_face_value(problem.convection, phi_u, phi_c, phi_d);
             const double f_out = side == 0 ? -F : F;
-            b -= f_out * (face - phi_c);
+            if (dc_store) dc -= f_out * (face - phi_c);
+            else b -= f_out * (face - phi_c);
           }
         }
       }
+    }
+    if (dc_store) {  // relaxed correction: a share of the new one, the rest the last one used
+      double& held = (*dc_store)[P];
+      if (!dc_first) dc = relaxation->weight * dc + (1.0 - relaxation->weight) * held;
+      held = dc;
+      b += dc;
     }
     // Sources: pressure gradient, gravity, extra viscous term, drag, manufactured.
     const double eps = state.eps_face[a][P];

@@ -16,6 +16,9 @@
 // SIMPLEC coefficient: d_P = A_a ε̄_P / (a_P/α − Σ a_nb)  (0 on fixed faces).
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include "flow/fields.h"
 #include "flow/flow_state.h"
 #include "linalg/stencil.h"
@@ -31,12 +34,25 @@ struct MomentumSystem {
   double rhs_l2 = 0;       // ||b||₂ of the relaxed system
 };
 
+// Relaxation of the deferred correction (docs/SOLVER.md "Stalled outer
+// iterations"): the correction DC_P entering b_P is
+//   DC_P ← w · DC_P(φ) + (1 − w) · DC_P(last assembly),
+// per momentum component and face; the first assembly records DC_P(φ). At a
+// fixed point DC_P(φ) equals the one held, so the steady solution is that
+// of the unrelaxed equations; only the path to it is damped.
+struct CorrectionRelaxation {
+  explicit CorrectionRelaxation(double weight_) : weight(weight_) {}
+  double weight;                             // w, the share of the new correction
+  std::array<std::vector<double>, 3> held;   // per component: DC of the last assembly (empty: none yet)
+};
+
 // Assembles the a-momentum equation into `sys` (whose eq must live on
 // FaceLayout(grid, axis).as_grid(grid)) and the SIMPLEC coefficients into
 // `d`. `mass_flux` = F of mass_flux.h, `divergence` = ∇·u per cell,
-// `relax` = α_u.
+// `relax` = α_u; `relaxation`, when given, relaxes the deferred correction.
 void assemble_momentum(const FlowProblem& problem, const FlowState& state,
                        const FaceVector& mass_flux, const CellField& divergence, int axis,
-                       double relax, MomentumSystem& sys, FaceField& d);
+                       double relax, MomentumSystem& sys, FaceField& d,
+                       CorrectionRelaxation* relaxation = nullptr);
 
 }  // namespace gridfree

@@ -95,7 +95,15 @@ SimpleOutcome run_simple(const FlowProblem& problem, const SimpleSettings& setti
       out.status = SolveStatus::kConverged;
       return out;
     }
-    if (stall && stall->stalled(std::max(report.continuity, report.momentum))) {
+    bool stalled = stall && stall->stalled(std::max(report.continuity, report.momentum));
+    if (stalled && settings.relax_stalled_correction && !ws->relaxed_correction && !stall_is_divergence(report)) {
+      // A limit cycle: relax the deferred correction and give it a new window.
+      ws->relaxed_correction = std::make_unique<CorrectionRelaxation>(settings.stalled_correction_weight);
+      out.correction_relaxed_from = it;
+      stall.emplace(settings.stall_window);
+      stalled = false;
+    }
+    if (stalled) {
       if (stall_is_divergence(report)) {  // no limit cycle: the quantity of interest itself wanders
         out.status = SolveStatus::kDiverged;
         out.reason = "diverged: no progress in " + std::to_string(settings.stall_window) + " iterations at iteration " +

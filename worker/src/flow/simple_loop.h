@@ -49,6 +49,13 @@ struct SimpleSettings {
   // numerics.stall_window on its own grid; nested_stall_window on the
   // coarse levels of the nested start.
   int stall_window = 0;
+  // On the first stall, relax the deferred correction instead of stopping:
+  // each new correction is blended with the last one used, weight
+  // stalled_correction_weight on the new one (flow/momentum.h
+  // CorrectionRelaxation); the stall window then starts again, and a second
+  // stall ends the job (docs/SOLVER.md "Stalled outer iterations").
+  bool relax_stalled_correction = false;
+  double stalled_correction_weight = 0.5;
   // Anderson acceleration depth of the outer iterations (flow/anderson.h);
   // 0 = off (the default: see docs/DESIGN.md for what it measured).
   int anderson_depth = 0;
@@ -97,6 +104,7 @@ struct SimpleOutcome {
   bool linear_failures = false;  // some linear solve missed its tolerance
   bool stopped = false;          // LoopControl::stop_requested ended it early
   bool stalled = false;          // not_converged by the stall window, not by the iteration cap
+  int correction_relaxed_from = 0;  // the iteration the stall remedy began at (0: never)
   int newton_steps = 0;          // Newton–Krylov only: steps taken
   int newton_fallbacks = 0;      // of which plain SIMPLEC steps (line search failed)
 };

@@ -40,7 +40,7 @@ SweepReport simplec_sweep(const FlowProblem& problem, const SimpleSettings& sett
     for (int a = 0; a < 3; ++a) {
       MomentumSystem& sys = ws.momentum;
       reshape_stencil(sys.eq, FaceLayout(g, a).as_grid(g));
-      assemble_momentum(problem, state, ws.mass_flux, divergence, a, settings.relax_u, sys, ws.d[a]);
+      assemble_momentum(problem, state, ws.mass_flux, divergence, a, settings.relax_u, sys, ws.d[a], ws.relaxed_correction.get());
       momentum_residual += sys.residual;
       momentum_scale += sys.scale;
       // Inexact solve: reduce this component's residual ||r||/||b|| 10×

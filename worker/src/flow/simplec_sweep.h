@@ -17,6 +17,8 @@
 // approximates a derivative.
 #pragma once
 
+#include <memory>
+
 #include <array>
 
 #include "flow/flow_state.h"
@@ -37,6 +39,9 @@ struct SweepWorkspace {
   // fluxes); the pressure correction then overwrites it with F of u*.
   FaceVector mass_flux;
   FaceVector d;  // SIMPLEC coefficients
+  // Set once the outer loop relaxes its deferred correction
+  // (SimpleSettings::relax_stalled_correction); null otherwise.
+  std::unique_ptr<CorrectionRelaxation> relaxed_correction;
 };
 
 // Inner iterations of one sweep, per momentum component and for p'.

@@ -93,6 +93,7 @@ std::optional<CoarseSolution> nested_start(const JobSpec& job, const ParticleSet
   coarse.numerics.cells = *cells;
   coarse.numerics.max_iterations = std::min(job.numerics.max_iterations, options.nested_max_iterations);
   coarse.numerics.stall_window = options.nested_stall_window;
+  coarse.numerics.relax_stalled_correction = false;  // a stalled coarse level is a start (above), not a result
   SolveOptions quiet = options;
   quiet.on_iteration = {};
   quiet.vtk_dir.reset();
@@ -143,6 +144,7 @@ SimpleSettings simple_settings_for(const NumericsSpec& numerics, const SimpleSet
   s.linear_floor = std::min(s.linear_floor, numerics.tolerances.linear);
   s.max_iterations = numerics.max_iterations;
   s.stall_window = numerics.stall_window;
+  s.relax_stalled_correction = numerics.relax_stalled_correction;
   return s;
 }
 
@@ -283,6 +285,7 @@ JobResult solve_grid(const JobSpec& job, const ParticleSet& particles, const Sol
   result.status = out.status;
   result.reason = out.reason;
   result.stalled = out.stalled;
+  if (out.correction_relaxed_from > 0) result.extra["correction_relaxed_from_iteration"] = out.correction_relaxed_from;
   result.iterations = out.iterations;
   result.residual_continuity = out.continuity;
   result.residual_momentum = out.momentum;

@@ -74,6 +74,9 @@ void normalise_numerics(nlohmann::json& n) {
   }
   fill(n, "max_iterations", defaults.max_iterations);
   fill(n, "stall_window", defaults.stall_window);
+  // Added after job hashes existed: its default is written by leaving it
+  // out, so a job with "none" is the job from before the field.
+  if (n.contains("stall_remedy") && n["stall_remedy"] == "none") n.erase("stall_remedy");
   if (n.contains("deposition") && n["deposition"].is_object()) {
     ProblemList problems;
     const DepositionSpec spec = parse_deposition(n["deposition"], "/numerics/deposition", problems);

@@ -105,6 +105,12 @@ NumericsSpec parse_numerics(const nlohmann::json& j, const std::string& path, co
   const std::int64_t window = read_integer(j, "stall_window", path, problems, 0);
   if (window < 0 || window > 1000000000) problems.add(child_pointer(path, "stall_window"), "must be from 0 (off) to 1e9");
   else n.stall_window = static_cast<int>(window);
+  const std::string remedy = read_string(j, "stall_remedy", path, problems, std::string("none"));
+  if (remedy == "relax_correction") n.relax_stalled_correction = true;
+  else if (remedy != "none")
+    problems.add(child_pointer(path, "stall_remedy"), "'" + remedy + "' is not one of none, relax_correction");
+  if (n.relax_stalled_correction && n.stall_window == 0)
+    problems.add(child_pointer(path, "stall_remedy"), "relax_correction acts when the stall rule fires: it needs a stall_window above 0");
   return n;
 }
 

@@ -53,6 +53,10 @@ struct NumericsSpec {
   TolerancesSpec tolerances;
   int max_iterations = 20000;
   int stall_window = 0;  // outer iterations without halving the residual before a stop; 0 = off
+  // What a first stall does (docs/SOLVER.md "Stalled outer iterations"):
+  // end the job (false, the default), or relax the deferred correction and
+  // give it one more window ("relax_correction").
+  bool relax_stalled_correction = false;
 };
 
 struct JobSpec {
