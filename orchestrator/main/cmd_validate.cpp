@@ -14,6 +14,7 @@
 #include "study/study_plan.h"
 #include "sched/adaptive_prior.h"
 #include "sched/cost_history.h"
+#include "sched/external_target.h"
 #include "store/sqlite.h"
 
 namespace gridfree::cli {
@@ -30,8 +31,11 @@ std::vector<std::string> grid_warnings(const Study& study, const ExpandedStudy& 
   std::map<std::size_t, std::vector<double>> h;
   for (const auto& j : ex.jobs) h[j.series].push_back(j.delta_star);
   if (study.adaptive_grids) {  // judged on the whole ladder; its coarse rungs stay in every fit
-    for (auto& [series, grids] : h) grids = study.grid_delta_star;
-    if (study.adaptive_grids->coarsest_delta_star > kAsymptoticDeltaStar) {
+    for (auto& [series, grids] : h) {
+      const auto ladder = study.external_ladders.find(ex.series[series].case_name);  // an external case's, in h
+      grids = ladder != study.external_ladders.end() ? ladder->second.h_nominal : study.grid_delta_star;
+    }
+    if (!study.external() && study.adaptive_grids->coarsest_delta_star > kAsymptoticDeltaStar) {
       std::ostringstream w;
       w << "/grids/coarsest_delta_star " << study.adaptive_grids->coarsest_delta_star << " > " << kAsymptoticDeltaStar
         << ": the coarse rungs stay in every fit of the series and can keep it pre-asymptotic "
@@ -92,7 +96,11 @@ void add_plan_command(CLI::App& app, int& exit_code) {
     const auto grids = grid_listing(study);
     const double rde = *target > 0 ? *target : study.adaptive_grids ? study.adaptive_grids->target_rde : 0;
     std::optional<TargetPlan> tp;
-    if (rde > 0) tp = plan_for_target(study, rde, prior_rde_model(*db, study), history);
+    std::optional<ExternalTargetPlan> etp;  // an external study's (sched/external_target.h)
+    if (rde > 0 && study.external())
+      etp = plan_external_target(study, ex, rde, *db, history);
+    else if (rde > 0)
+      tp = plan_for_target(study, rde, prior_rde_model(*db, study), history);
     // every warning, in the order printed on stderr, also in --json's "warnings"
     auto warnings = grid_warnings(study, ex);
     for (auto& w : neighbour_warnings(grids)) warnings.push_back(std::move(w));
@@ -103,11 +111,13 @@ void add_plan_command(CLI::App& app, int& exit_code) {
       j["grids"] = grid_listing_json(grids);
       j["warnings"] = warnings;
       if (tp) j["target"] = target_plan_json(*tp);
+      if (etp) j["target"] = external_target_json(*etp);
       std::cout << j.dump(2) << '\n';
     } else {
       std::cout << "study " << study.name << ": " << study.design_description() << "\n" << plan_to_table(plan)
                 << "\n" << grid_listing_table(grids);
       if (tp) std::cout << "\n" << target_plan_text(*tp);
+      if (etp) std::cout << "\n" << external_target_text(*etp);
     }
     warn_close_grids(warnings);
     exit_code = to_int(ExitCode::kOk);

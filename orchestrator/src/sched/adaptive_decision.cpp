@@ -3,6 +3,7 @@
 
 #include "study/format_number.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "study/study_plan.h"
@@ -12,12 +13,18 @@ namespace {
 
 std::string percent(double fraction) { return format_number("%.3g", 100 * fraction) + " %"; }
 
-std::string core_hours(double cpu_s) { return format_number("%.3g", cpu_s / 3600) + " core-hours"; }
+std::string core_hours(double cpu_s) {
+  return std::isnan(cpu_s) ? std::string("unknown core-hours (no cost figure yet)")
+                           : format_number("%.3g", cpu_s / 3600) + " core-hours";
+}
+
+// The ladder's axis: Δ* for gridfree's own cases, h for an external case's.
+std::string axis(const AdaptiveGrids& a) { return a.variable ? "h " : "Δ* "; }
 
 // "best: Δ* 0.69, RDE 1.4 % (verdict pre-asymptotic), f0 = 1012.4".
-std::string best_figure(const AdaptiveFit& fit) {
+std::string best_figure(const AdaptiveGrids& a, const AdaptiveFit& fit) {
   if (!fit.finest_delta_star || !fit.finest_rde) return "no extrapolation (" + std::to_string(fit.ng) + " converged grids)";
-  std::string out = "best: Δ* " + format_number("%.3g", *fit.finest_delta_star) + ", RDE " + percent(*fit.finest_rde) +
+  std::string out = "best: " + axis(a) + format_number("%.3g", *fit.finest_delta_star) + ", RDE " + percent(*fit.finest_rde) +
                     " (verdict " + (fit.verdict.empty() ? "none" : fit.verdict) + ")";
   if (fit.f0) out += ", f0 = " + format_number("%.6g", *fit.f0);
   return out;
@@ -42,9 +49,10 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
   const std::string target = percent(a.target_rde);
   for (std::size_t k = started; k < ladder.size(); ++k) d.saved_cpu_s += scale * ladder[k].model_cpu_s;
   d.rungs_not_run = started < ladder.size() ? ladder.size() - started : 0;
-  const std::string not_run = std::to_string(d.rungs_not_run) + " grid(s) down to Δ* " +
+  const std::string not_run = std::to_string(d.rungs_not_run) + " grid(s) down to " + axis(a) +
                               format_number("%.3g", ladder.empty() ? 0.0 : ladder.back().delta_star) + " not run";
-  const std::string at = fit.finest_delta_star ? "Δ* " + format_number("%.3g", *fit.finest_delta_star) : "no converged grid";
+  const std::string at =
+      fit.finest_delta_star ? axis(a) + format_number("%.3g", *fit.finest_delta_star) : "no converged grid";
   // 1. target met
   const bool enough = fit.ng >= static_cast<int>(AdaptiveGrids::kFirstGrids);
   if (enough && fit.verdict == "converged" && fit.finest_rde && *fit.finest_rde <= a.target_rde) {
@@ -66,8 +74,10 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
   // 2. ladder end
   if (started >= ladder.size()) {
     d.kind = AdaptiveDecision::Kind::kTargetNotReached;
-    d.message = "target not reached: " + why + " at " + at + " and finest_delta_star " +
-                format_number("%.3g", a.finest_delta_star) + " reached; " + best_figure(fit);
+    const std::string end = a.variable ? "the ladder's finest grid (" + a.variable->name + " = " +
+                                             format_number("%.6g", a.variable->finest) + ")"
+                                       : "finest_delta_star " + format_number("%.3g", a.finest_delta_star);
+    d.message = "target not reached: " + why + " at " + at + " and " + end + " reached; " + best_figure(a, fit);
     return d;
   }
   // 3. caps on the next rung
@@ -82,8 +92,8 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
           format_number("%.3g", *a.max_cpu_s);
   if (!cap.empty()) {
     d.kind = AdaptiveDecision::Kind::kTargetNotReached;
-    d.message = "target not reached: " + why + " at " + at + "; the next grid Δ* " + format_number("%.3g", next.delta_star) +
-                " " + cap + "; " + best_figure(fit) + "; " + not_run + " (an estimated " + core_hours(d.saved_cpu_s) + ")";
+    d.message = "target not reached: " + why + " at " + at + "; the next grid " + axis(a) + format_number("%.3g", next.delta_star) +
+                " " + cap + "; " + best_figure(a, fit) + "; " + not_run + " (an estimated " + core_hours(d.saved_cpu_s) + ")";
     return d;
   }
   // 4. continue
@@ -91,9 +101,14 @@ AdaptiveDecision decide(const AdaptiveGrids& a, const std::vector<AdaptiveRung>&
   d.next_rung = started;
   d.saved_cpu_s = 0;
   d.rungs_not_run = 0;
-  d.message = "refining: " + why + " at " + at + "; next grid Δ* " + format_number("%.3g", next.delta_star) + " (" +
-              std::to_string(next.cells[0]) + "x" + std::to_string(next.cells[1]) + "x" +
-              std::to_string(next.cells[2]) + ", an estimated " + format_number("%.3g", scale * next.model_cpu_s) + " CPU s)";
+  const std::string grid = next.label.empty() ? std::to_string(next.cells[0]) + "x" + std::to_string(next.cells[1]) +
+                                                   "x" + std::to_string(next.cells[2])
+                                             : next.label;
+  const std::string cost = std::isnan(next.model_cpu_s)
+                               ? std::string("cost unknown")
+                               : "an estimated " + format_number("%.3g", scale * next.model_cpu_s) + " CPU s";
+  d.message = "refining: " + why + " at " + at + "; next grid " + axis(a) + format_number("%.3g", next.delta_star) +
+              " (" + grid + ", " + cost + ")";
   return d;
 }
 

@@ -8,6 +8,7 @@
 
 #include "job/job_hash.h"
 #include "report/extrapolator.h"
+#include "sched/adaptive_external.h"
 #include "sched/adaptive_window.h"
 #include "sched/series_finish.h"
 #include "study/study_plan.h"
@@ -43,12 +44,11 @@ nlohmann::json job_spec(Store& store, long long job_id) {
   return st.step() ? nlohmann::json::parse(st.as_text(0)) : nlohmann::json();
 }
 
-// Links the job of `rung` to the series (the job row is shared when another
-// study has it already). Inside a transaction.
-long long link_rung(Store& store, const SeriesInfo& s, nlohmann::json spec, const AdaptiveRung& rung,
+// Links the job `spec` of `rung` to the series (the job row is shared when
+// another study has it already). Inside a transaction.
+long long link_rung(Store& store, const SeriesInfo& s, const nlohmann::json& spec, const AdaptiveRung& rung,
                     std::size_t index, double actual_delta_star) {
   auto& db = store.db();
-  spec["numerics"]["grid"] = {{"cells", {rung.cells[0], rung.cells[1], rung.cells[2]}}};
   const std::string hash = job_hash(spec);
   const long long cells = static_cast<long long>(rung.cells[0]) * rung.cells[1] * rung.cells[2];
   db.prepare("INSERT OR IGNORE INTO jobs(job_hash, spec_json, nx, ny, nz, cells, delta_star) VALUES (?, ?, ?, ?, ?, ?, ?)")
@@ -97,12 +97,20 @@ bool decide_series(Store& store, const SeriesInfo& s, const AdaptiveGrids& setti
   }
   AdaptiveFit fit = adaptive_fit_of(ex, static_cast<int>(h.size()));
   fit.window = window;
-  const double scale = measured > 0 && model > 0 ? measured / model : 1.0;
   nlohmann::json spec = job_spec(store, points.front().job_id);
-  std::array<double, 3> domain{};
-  const auto d = spec.value("/case/domain_dp"_json_pointer, nlohmann::json::array());
-  for (std::size_t a = 0; a < 3 && a < d.size(); ++a) domain[a] = d[a].get<double>();
-  const auto ladder = adaptive_rungs(adaptive_ladder(settings), domain);
+  std::vector<AdaptiveRung> ladder;
+  ExternalRungs external;  // an external case's ladder in h (sched/adaptive_external.h)
+  double scale = measured > 0 && model > 0 ? measured / model : 1.0;
+  if (s.key.external()) {
+    external = external_rungs(store.study_definition(s.study_id), settings, s.key.case_name, spec, points);
+    ladder = external.rungs;
+    scale = 1;  // their costs are the external estimate itself
+  } else {
+    std::array<double, 3> domain{};
+    const auto d = spec.value("/case/domain_dp"_json_pointer, nlohmann::json::array());
+    for (std::size_t a = 0; a < 3 && a < d.size(); ++a) domain[a] = d[a].get<double>();
+    ladder = adaptive_rungs(adaptive_ladder(settings), domain);
+  }
   const auto decision = decide_adaptive_step(settings, ladder, points.size(), fit, scale,
                                              static_cast<double>(physical_memory_bytes()));
 
@@ -113,9 +121,18 @@ bool decide_series(Store& store, const SeriesInfo& s, const AdaptiveGrids& setti
   std::optional<long long> job_id;
   if (decision.kind == AdaptiveDecision::Kind::kContinue) {
     const auto& rung = ladder[decision.next_rung];
-    job_id = link_rung(store, s, spec, rung, decision.next_rung,
-                       std::cbrt(domain[0] * domain[1] * domain[2] /
-                                 (static_cast<double>(rung.cells[0]) * rung.cells[1] * rung.cells[2])));
+    if (s.key.external()) {
+      job_id = link_rung(store, s, external.specs[decision.next_rung], rung, decision.next_rung,
+                         external.h[decision.next_rung]);
+    } else {
+      const auto d = spec.value("/case/domain_dp"_json_pointer, nlohmann::json::array());
+      std::array<double, 3> domain{};
+      for (std::size_t a = 0; a < 3 && a < d.size(); ++a) domain[a] = d[a].get<double>();
+      const double volume = domain[0] * domain[1] * domain[2];
+      spec["numerics"]["grid"] = {{"cells", {rung.cells[0], rung.cells[1], rung.cells[2]}}};
+      job_id = link_rung(store, s, spec, rung, decision.next_rung,
+                         std::cbrt(volume / (static_cast<double>(rung.cells[0]) * rung.cells[1] * rung.cells[2])));
+    }
   }
   store.db()
       .prepare("UPDATE series SET adaptive_status = ?, adaptive_note = ? WHERE id = ?")

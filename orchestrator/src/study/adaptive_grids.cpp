@@ -10,6 +10,7 @@ namespace gridfree {
 
 std::vector<double> adaptive_ladder(const AdaptiveGrids& a) {
   std::vector<double> out;
+  if (a.variable) return out;  // in h, per case (study/external_ladder.h)
   if (!(a.ratio > 1) || !(a.coarsest_delta_star > 0) || !(a.finest_delta_star > 0)) return out;
   for (int k = 0; k < 10000; ++k) {
     const double d = a.coarsest_delta_star / std::pow(a.ratio, k);
@@ -55,14 +56,74 @@ std::optional<double> positive(const nlohmann::json& g, const char* key, Problem
   return it->get<double>();
 }
 
+// "variables": {"N": {"coarsest": 20, "finest": 160, "type": "integer"}}.
+std::optional<AdaptiveVariable> parse_adaptive_variable(const nlohmann::json& v, ProblemList& problems) {
+  const std::string at = "/grids/variables";
+  if (!v.is_object() || v.empty()) {
+    problems.add(at, "must name the grid variable the ladder refines: {\"N\": {\"coarsest\": 20, \"finest\": 160}}");
+    return std::nullopt;
+  }
+  if (v.size() > 1) {
+    std::string names;
+    for (auto it = v.begin(); it != v.end(); ++it) names += (names.empty() ? "" : ", ") + it.key();
+    problems.add(at, "an adaptive series refines one grid variable and maps each wanted h to it; the study gives " +
+                         std::to_string(v.size()) + " (" + names +
+                         "): keep one and derive the others from it in /cases/NAME/external/variables "
+                         "(e.g. \"M\": \"2 * N\")");
+    return std::nullopt;
+  }
+  AdaptiveVariable out;
+  out.name = v.begin().key();
+  const nlohmann::json& d = v.begin().value();
+  const std::string here = at + "/" + out.name;
+  if (!d.is_object()) {
+    problems.add(here, "must be {\"coarsest\": value, \"finest\": value} (optionally \"type\": \"integer\" or \"real\")");
+    return std::nullopt;
+  }
+  const std::size_t before = problems.problems().size();
+  for (auto it = d.begin(); it != d.end(); ++it)
+    if (it.key() != "coarsest" && it.key() != "finest" && it.key() != "type")
+      problems.add(here + "/" + it.key(), "unknown field; valid: coarsest, finest, type");
+  for (const char* k : {"coarsest", "finest"}) {
+    auto it = d.find(k);
+    if (it == d.end())
+      problems.add(here + "/" + k, "required: the variable's value on the " + std::string(k) + " grid of the ladder");
+    else if (!it->is_number() || it->is_boolean() || !std::isfinite(it->get<double>()))
+      problems.add(here + "/" + k, "must be a finite number");
+  }
+  if (problems.problems().size() != before) return std::nullopt;
+  out.coarsest = d["coarsest"].get<double>();
+  out.finest = d["finest"].get<double>();
+  out.integer = d["coarsest"].is_number_integer() && d["finest"].is_number_integer();
+  if (auto t = d.find("type"); t != d.end()) {
+    if (*t == "integer")
+      out.integer = true;
+    else if (*t == "real")
+      out.integer = false;
+    else
+      problems.add(here + "/type", "must be \"integer\" or \"real\"");
+  }
+  if (out.integer && (out.coarsest != std::round(out.coarsest) || out.finest != std::round(out.finest)))
+    problems.add(here, "an integer variable needs integer coarsest and finest values");
+  if (out.coarsest == out.finest) problems.add(here + "/finest", "must differ from coarsest");
+  if (problems.problems().size() != before) return std::nullopt;
+  return out;
+}
+
 }  // namespace
 
 std::optional<AdaptiveGrids> parse_adaptive_grids(const nlohmann::json& g, ProblemList& problems) {
   const std::size_t before = problems.problems().size();
+  const bool external = g.contains("variables");  // an external study's ladder (study/external_ladder.h)
   for (auto it = g.begin(); it != g.end(); ++it) {
     const std::string& k = it.key();
+    if (external && (k == "coarsest_delta_star" || k == "finest_delta_star")) {
+      problems.add("/grids/" + k, "an external study's ladder is given by its grid variable (/grids/variables), "
+                                  "not by Δ*");
+      continue;
+    }
     if (k != "target_rde" && k != "coarsest_delta_star" && k != "ratio" && k != "finest_delta_star" &&
-        k != "max_cpu_s" && k != "max_memory")
+        k != "max_cpu_s" && k != "max_memory" && k != "variables")
       problems.add("/grids/" + k,
                    k == "delta_star" || k == "cells"
                        ? "a grid list and target_rde exclude each other"
@@ -71,15 +132,16 @@ std::optional<AdaptiveGrids> parse_adaptive_grids(const nlohmann::json& g, Probl
   }
   AdaptiveGrids a;
   const auto target = positive(g, "target_rde", problems, true);
-  const auto coarsest = positive(g, "coarsest_delta_star", problems, true);
+  const auto coarsest = external ? std::optional<double>(0) : positive(g, "coarsest_delta_star", problems, true);
   const auto ratio = positive(g, "ratio", problems, true);
-  const auto finest = positive(g, "finest_delta_star", problems, true);
+  const auto finest = external ? std::optional<double>(0) : positive(g, "finest_delta_star", problems, true);
+  if (external) a.variable = parse_adaptive_variable(g["variables"], problems);
   a.max_cpu_s = positive(g, "max_cpu_s", problems, false);
   if (target && *target >= 1) problems.add("/grids/target_rde", "a fraction below 1 (0.01 = 1 %)");
   if (ratio && *ratio < kMinNeighbourRatio)
     problems.add("/grids/ratio", "must be at least " + std::to_string(kMinNeighbourRatio).substr(0, 3) +
                                      ": closer grids differ mostly by grid-to-grid scatter");
-  if (coarsest && finest && *finest >= *coarsest)
+  if (!external && coarsest && finest && *finest >= *coarsest)
     problems.add("/grids/finest_delta_star", "must be smaller than coarsest_delta_star");
   if (auto m = g.find("max_memory"); m != g.end()) {
     a.max_memory_bytes = parse_memory_field(*m);
@@ -91,6 +153,7 @@ std::optional<AdaptiveGrids> parse_adaptive_grids(const nlohmann::json& g, Probl
   a.coarsest_delta_star = *coarsest;
   a.ratio = *ratio;
   a.finest_delta_star = *finest;
+  if (external) return a;  // the ladder is checked per case (study/external_ladder.h)
   if (adaptive_ladder(a).size() < AdaptiveGrids::kMinLadder) {
     problems.add("/grids/finest_delta_star", "the ladder from coarsest_delta_star by ratio holds fewer than " +
                                                  std::to_string(AdaptiveGrids::kMinLadder) +

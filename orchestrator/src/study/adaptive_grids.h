@@ -11,6 +11,15 @@
 //
 // A series starts with the first kFirstGrids rungs; the orchestrator adds
 // one rung at a time after that (sched/adaptive_series.h).
+//
+// External studies (study/external_ladder.h) give the ladder by their one
+// grid variable instead of Δ*:
+//
+//   "grids": {"target_rde": 0.02, "ratio": 1.41,
+//             "variables": {"N": {"coarsest": 20, "finest": 160}}}
+//
+// and the ladder is in each case's h: h_k = h(coarsest) / ratio^k down to
+// h(finest), each rung's variable found by inverting h.
 #pragma once
 
 #include <optional>
@@ -23,6 +32,13 @@
 
 namespace gridfree {
 
+// The grid variable an external study's ladder refines.
+struct AdaptiveVariable {
+  std::string name;
+  double coarsest = 0, finest = 0;  // the variable's values at the two ends of the ladder
+  bool integer = true;              // "type": integer (rounded to the nearest integer) or real
+};
+
 struct AdaptiveGrids {
   double target_rde = 0.01;                 // RDE of the finest grid to reach (fraction)
   double coarsest_delta_star = 0;
@@ -30,6 +46,7 @@ struct AdaptiveGrids {
   double finest_delta_star = 0;
   std::optional<double> max_cpu_s;          // cap: predicted CPU seconds of the next job
   std::optional<double> max_memory_bytes;   // cap: estimated memory of the next job (default: the machine's)
+  std::optional<AdaptiveVariable> variable; // external studies: the ladder is in h (Δ* fields unused)
 
   // Grids run before the first extrapolation: the least-squares fits need 4
   // (docs/PHYSICS.md §8).
@@ -39,7 +56,8 @@ struct AdaptiveGrids {
   static constexpr std::size_t kMinLadder = 5;
 };
 
-// The ladder Δ*_0 > Δ*_1 > ... > Δ*_K (see above).
+// The ladder Δ*_0 > Δ*_1 > ... > Δ*_K (see above); empty for an external
+// study's ladder (study/external_ladder.h).
 std::vector<double> adaptive_ladder(const AdaptiveGrids& a);
 
 // Reads and checks the adaptive form of "grids" (the object at /grids); every

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "study/adaptive_grids.h"
@@ -15,6 +16,7 @@ struct AdaptiveRung {
   std::array<int, 3> cells{};
   double model_cpu_s = 0;         // cost model, one thread (core-seconds)
   double memory_bytes = 0;        // estimated peak memory
+  std::string label;              // an external rung: its variable and cells ("N = 57, 3249 cells"); "" otherwise
 };
 
 std::vector<AdaptiveRung> adaptive_rungs(const std::vector<double>& ladder, const std::array<double, 3>& domain_dp);

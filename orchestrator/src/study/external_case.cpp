@@ -158,6 +158,22 @@ std::vector<std::pair<std::size_t, std::string>> placeholders_of(const std::stri
   return out;
 }
 
+std::string external_h_expression(const json& h, std::string* meaning) {
+  std::string expression, says;
+  if (h.is_string()) {
+    expression = h.get<std::string>();
+    says = "h = " + expression;
+  } else if (h.is_object()) {
+    const std::string cells = h.value("cells", "1");
+    const double volume = h.value("volume", 1.0);
+    const int dim = h.value("dim", 3);
+    expression = "(" + external_number_text(volume) + " / (" + cells + ")) ^ (1 / " + std::to_string(dim) + ")";
+    says = "h = (V / cells)^(1/" + std::to_string(dim) + "), cells = " + cells + ", V = " + external_number_text(volume);
+  }
+  if (meaning != nullptr) *meaning = says;
+  return expression;
+}
+
 ExternalGrid external_grid(const ExternalCase& c, const GridVariables& grids, std::size_t level) {
   ExternalGrid g;
   for (const auto& [name, values] : grids) g.variables[name] = values.at(level);
@@ -248,16 +264,11 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
   };
   for (const auto& [n, e] : c.variables) check_expression(e, child_pointer(at + "/variables", n));
   if (auto h = ext.find("h"); h != ext.end()) {
+    c.h_expression = external_h_expression(*h, &c.h_meaning);
     if (h->is_string()) {
-      c.h_expression = h->get<std::string>();
-      c.h_meaning = "h = " + c.h_expression;
       check_expression(c.h_expression, at + "/h");
     } else if (h->is_object()) {
       const std::string cells = h->value("cells", "1");
-      const double volume = h->value("volume", 1.0);
-      const int dim = h->value("dim", 3);
-      c.h_expression = "(" + external_number_text(volume) + " / (" + cells + ")) ^ (1 / " + std::to_string(dim) + ")";
-      c.h_meaning = "h = (V / cells)^(1/" + std::to_string(dim) + "), cells = " + cells + ", V = " + external_number_text(volume);
       check_expression(cells, at + "/h/cells");
       if (!ext.contains("cells")) c.cells_expression = cells;
     }

@@ -58,6 +58,10 @@ std::optional<ExternalCase> parse_external_case(const nlohmann::json& ext, const
                                                 const std::filesystem::path& base_dir,
                                                 const GridVariables& grids, ProblemList& problems);
 
+// h as one expression: the string itself, or (V / (cells))^(1/dim) spelt
+// out for {"cells", "volume", "dim"}; `meaning` (if given) for reports.
+std::string external_h_expression(const nlohmann::json& h, std::string* meaning = nullptr);
+
 // The values on grid `level`. Throws ExpressionError (names the expression)
 // or std::runtime_error (a cycle among derived variables).
 ExternalGrid external_grid(const ExternalCase& c, const GridVariables& grids, std::size_t level);

@@ -19,12 +19,16 @@ std::vector<GridRow> grid_listing(const Study& study) {
   const bool requested = !study.grid_delta_star.empty();
   for (const auto& c : study.cases) {
     if (c.external) {  // external cases: h and cells from their expressions (study/external_case.h)
-      for (std::size_t i = 0; i < external_grid_count(study.grid_variables); ++i) {
-        const ExternalGrid g = external_grid(*c.external, study.grid_variables, i);
+      const GridVariables& grids = external_grids_of(study, c.name);
+      const auto ladder = study.external_ladders.find(c.name);
+      for (std::size_t i = 0; i < external_grid_count(grids); ++i) {
+        const ExternalGrid g = external_grid(*c.external, grids, i);
         GridRow r;
         r.case_name = c.name;
         r.index = i;
-        r.pointer = "/grids/variables level " + std::to_string(i);
+        r.pointer = ladder != study.external_ladders.end() ? grid_pointer(study, i)
+                                                           : "/grids/variables level " + std::to_string(i);
+        if (ladder != study.external_ladders.end()) r.requested = ladder->second.h_nominal.at(i);
         r.actual = g.h;
         r.h_meaning = c.external->h_meaning;
         r.cell_count = g.cells ? static_cast<std::uint64_t>(std::max(1.0, std::round(*g.cells))) : 0;

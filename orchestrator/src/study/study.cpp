@@ -15,6 +15,11 @@ std::string SeriesKey::label() const {
   return out;
 }
 
+const GridVariables& external_grids_of(const Study& study, const std::string& case_name) {
+  const auto it = study.external_ladders.find(case_name);
+  return it != study.external_ladders.end() ? it->second.variables : study.grid_variables;
+}
+
 const StudyCase* Study::find_case(const std::string& n) const {
   for (const auto& c : cases)
     if (c.name == n) return &c;

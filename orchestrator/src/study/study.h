@@ -19,6 +19,7 @@
 #include "job/job_spec.h"
 #include "study/adaptive_grids.h"
 #include "study/external_case.h"
+#include "study/external_ladder.h"
 #include "study/study_ensembles.h"
 
 namespace gridfree {
@@ -88,6 +89,7 @@ struct Study {
   std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}
   std::optional<AdaptiveGrids> adaptive_grids;    // or grids as a target (grid_delta_star = its ladder)
   GridVariables grid_variables;                   // or grids: {"variables": {...}} (external cases)
+  std::map<std::string, ExternalLadder> external_ladders;  // or an external adaptive ladder, per case
   nlohmann::json numerics = nlohmann::json::object();  // merged into every job
   ExtrapolationSettings extrapolation;
   std::optional<AlignmentOption> alignment;  // off unless the study asks
@@ -97,6 +99,10 @@ struct Study {
   bool external() const { return !cases.empty() && cases.front().external.has_value(); }
   std::string design_description() const;  // "factorial" or "one_at_a_time (baseline ...)"
 };
+
+// An external case's grid variables: its adaptive ladder's rungs
+// (study/external_ladder.h), or the study's grids.variables.
+const GridVariables& external_grids_of(const Study& study, const std::string& case_name);
 
 struct StudyJob {
   std::size_t series = 0;          // index into ExpandedStudy::series

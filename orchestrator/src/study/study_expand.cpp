@@ -103,14 +103,17 @@ void expand_external(const Study& s, ExpandedStudy& out) {
   for (const auto& c : s.cases) {
     if (!c.external) continue;
     auto& jobs = jobs_of_case[c.name];
-    for (std::size_t g = 0; g < external_grid_count(s.grid_variables); ++g) {
-      const ExternalGrid grid = external_grid(*c.external, s.grid_variables, g);
+    const GridVariables& grids = external_grids_of(s, c.name);
+    const auto ladder = s.external_ladders.find(c.name);
+    for (std::size_t g = 0; g < external_grid_count(grids); ++g) {
+      if (s.adaptive_grids && g >= AdaptiveGrids::kFirstGrids) break;  // the rest as decided (sched/adaptive_series.h)
+      const ExternalGrid grid = external_grid(*c.external, grids, g);
       StudyJob job;
       job.grid = g;
       const double cells = grid.cells ? std::max(1.0, std::round(*grid.cells)) : 1.0;
       job.cells = {static_cast<int>(std::min(cells, 2.0e9)), 1, 1};
       job.delta_star = grid.h;
-      job.delta_star_nominal = grid.h;
+      job.delta_star_nominal = ladder != s.external_ladders.end() ? ladder->second.h_nominal.at(g) : grid.h;
       job.doc = external_job_document(*c.external, c.name, grid, g);
       job.hash = job_hash(job.doc);
       jobs.push_back(std::move(job));

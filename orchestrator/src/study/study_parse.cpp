@@ -426,6 +426,19 @@ void parse_external_cases(const json& doc, const std::filesystem::path& base_dir
   for (const char* key : {"factors", "design", "alignment", "ensembles", "numerics"})
     if (doc.contains(key))
       problems.add_once(std::string("/") + key, "does not apply to external cases (their settings are the template's)");
+  if (s.adaptive_grids && s.adaptive_grids->variable) {  // a ladder in h per case (study/external_ladder.h)
+    if (!cases_sound) return;
+    const AdaptiveVariable& v = *s.adaptive_grids->variable;
+    const GridVariables ends = {{v.name, {v.coarsest, v.finest}}};  // the expressions checked at both ends
+    for (auto& c : s.cases) {
+      const std::string at = child_pointer("/cases", c.name) + "/external";
+      c.external = parse_external_case(c.doc["external"], at, base_dir, ends, problems);
+      if (!c.external) continue;
+      ExternalLadder ladder = external_ladder(*c.external, v, s.adaptive_grids->ratio, c.name, problems);
+      if (!ladder.h_nominal.empty()) s.external_ladders[c.name] = std::move(ladder);
+    }
+    return;
+  }
   if (!cases_sound || (variables && s.grid_variables.empty())) return;  // their problems are reported
   if (external_grid_count(s.grid_variables) < 1) return;
   for (auto& c : s.cases) {

@@ -29,7 +29,7 @@ std::vector<AdaptiveRung> ladder() {
   std::vector<AdaptiveRung> out;
   const auto ds = adaptive_ladder(settings());
   for (std::size_t k = 0; k < ds.size(); ++k)
-    out.push_back({ds[k], {10, 10, 10}, 100.0 * std::pow(2.0, k), 1073741824.0 * std::pow(2.0, k)});
+    out.push_back({ds[k], {10, 10, 10}, 100.0 * std::pow(2.0, k), 1073741824.0 * std::pow(2.0, k), ""});
   return out;
 }
 

@@ -41,7 +41,7 @@ AdaptiveGrids fine_ladder_settings() {
 
 std::vector<AdaptiveRung> rungs() {
   std::vector<AdaptiveRung> out;
-  for (double d : adaptive_ladder(fine_ladder_settings())) out.push_back({d, {10, 10, 10}, 100.0, 1e6});
+  for (double d : adaptive_ladder(fine_ladder_settings())) out.push_back({d, {10, 10, 10}, 100.0, 1e6, ""});
   return out;
 }
 
