@@ -422,7 +422,10 @@ void parse_external_cases(const json& doc, const std::filesystem::path& base_dir
                                 "in a study of their own");
     return;
   }
-  if (!variables) problems.add_once("/grids", "external cases take their grids as {\"variables\": {\"N\": [...]}}");
+  if (!variables)
+    problems.add_once("/grids", "external cases take their grids as {\"variables\": {\"N\": [...]}}, or as an adaptive "
+                                "ladder {\"target_rde\": ..., \"ratio\": ..., \"variables\": {\"N\": {\"coarsest\": ..., "
+                                "\"finest\": ...}}}");
   for (const char* key : {"factors", "design", "alignment", "ensembles", "numerics"})
     if (doc.contains(key))
       problems.add_once(std::string("/") + key, "does not apply to external cases (their settings are the template's)");

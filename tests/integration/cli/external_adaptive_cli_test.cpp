@@ -133,6 +133,23 @@ TEST(ExternalAdaptiveCli, StopsAtTheTargetWithTheGridsTheInversionOfHChooses) {
   EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM study_jobs"), "6");
 }
 
+TEST(ExternalAdaptiveCli, TheVolumeOverCellsFormInvertsThroughTheCellsExpression) {
+  // h = (1 / N²)^(1/2) = 1/N written as {"cells", "volume", "dim"}: the same
+  // rungs as "1 / N", listed by plan at the study's own target.
+  auto dir = adaptive_poly_dir("volume", ladder_grids());
+  auto doc = nlohmann::json::parse(std::ifstream(dir / "study.json"));
+  doc["cases"]["poly"]["external"]["h"] = {{"cells", "N * N"}, {"volume", 1}, {"dim", 2}};
+  std::ofstream(dir / "study.json") << doc.dump(2);
+  const CommandRun plan = run_poly(dir, "plan study.json --json --db none.sqlite");
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  const auto grids = nlohmann::json::parse(plan.out)["target"]["series"][0]["grids"];
+  ASSERT_GE(grids.size(), 6u);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(grids[k]["variables"]["N"].get<double>(), expected_n(k)) << k;
+    EXPECT_NEAR(grids[k]["h"].get<double>() * expected_n(k), 1.0, 1e-12) << k;
+  }
+}
+
 TEST(ExternalAdaptiveCli, RefusesHNotMonotoneTwoGridVariablesAndRungsRoundingToOneValue) {
   // h = 1/N + 0.001 N² falls to N ≈ 8 and rises after.
   auto dir = adaptive_poly_dir("monotone", ladder_grids(), "1 / N + 0.001 * N ^ 2");
