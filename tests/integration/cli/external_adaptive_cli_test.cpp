@@ -9,7 +9,9 @@
 // whose h is not monotone in N, one with two grid variables and one whose
 // rungs round to the same N are refused naming the JSON path. `plan
 // --target-rde` fits RDE(h) to the finished series and predicts the grids
-// a tighter target needs; without one it says the RDE is unknown.
+// a tighter target needs; without one it says the RDE is unknown. h given
+// as (V/cells)^(1/dim) gives the same rungs as 1/N; a real variable's rungs
+// are rounded to 4 significant digits.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -147,6 +149,27 @@ TEST(ExternalAdaptiveCli, TheVolumeOverCellsFormInvertsThroughTheCellsExpression
   for (int k = 0; k < 6; ++k) {
     EXPECT_EQ(grids[k]["variables"]["N"].get<double>(), expected_n(k)) << k;
     EXPECT_NEAR(grids[k]["h"].get<double>() * expected_n(k), 1.0, 1e-12) << k;
+  }
+}
+
+TEST(ExternalAdaptiveCli, ARealVariableIsRoundedToFourSignificantDigits) {
+  // A scale factor s with h = 1 / (4 s): the rungs are s = 1.25^k to 4
+  // significant digits (1.953 for 1.953125), h recomputed from them.
+  auto grids = ladder_grids();
+  grids["variables"] = {{"s", {{"coarsest", 1}, {"finest", 16}, {"type", "real"}}}};
+  auto dir = adaptive_poly_dir("real", grids, "1 / (4 * s)");
+  auto doc = nlohmann::json::parse(std::ifstream(dir / "study.json"));
+  doc["cases"]["poly"]["external"]["variables"] = {{"h_cell", "1 / (4 * s)"}, {"N", "round(4 * s)"}};
+  doc["cases"]["poly"]["external"]["cells"] = "16 * s ^ 2";
+  std::ofstream(dir / "study.json") << doc.dump(2);
+  const CommandRun plan = run_poly(dir, "plan study.json --json --db none.sqlite");
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  const auto rungs = nlohmann::json::parse(plan.out)["target"]["series"][0]["grids"];
+  const double want[] = {1, 1.25, 1.563, 1.953, 2.441, 3.052};
+  ASSERT_GE(rungs.size(), 6u);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(rungs[k]["variables"]["s"].get<double>(), want[k]) << k;
+    EXPECT_NEAR(rungs[k]["h"].get<double>() * 4 * want[k], 1.0, 1e-12) << k;
   }
 }
 
