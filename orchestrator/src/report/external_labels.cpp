@@ -2,6 +2,7 @@
 #include "report/external_labels.h"
 
 #include "report/text_format.h"
+#include "study/case_extends.h"
 
 namespace gridfree {
 
@@ -26,10 +27,10 @@ std::string external_h_label(const nlohmann::json& h) {
 
 void label_external_series(const nlohmann::json& definition, const SeriesKey& key, SeriesData& sd) {
   sd.quantity = key.quantity;
-  nlohmann::json ext = nlohmann::json::object();
-  if (definition.is_object() && definition.contains("cases") && definition["cases"].is_object() &&
-      definition["cases"].contains(key.case_name) && definition["cases"][key.case_name].is_object())
-    ext = definition["cases"][key.case_name].value("external", nlohmann::json::object());
+  // The case as the study resolved it: its `external` section may be
+  // inherited through "extends".
+  const nlohmann::json c = resolved_case(definition, key.case_name);
+  const nlohmann::json ext = c.is_object() ? c.value("external", nlohmann::json::object()) : nlohmann::json::object();
   nlohmann::json q = nlohmann::json::object();
   if (ext.contains("collect") && ext["collect"].is_object() && ext["collect"].contains("quantities") &&
       ext["collect"]["quantities"].is_object() && ext["collect"]["quantities"].contains(key.quantity))

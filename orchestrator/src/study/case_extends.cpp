@@ -83,4 +83,12 @@ json resolve_case_extends(const json& study_doc, ProblemList& problems) {
   return out;
 }
 
+json resolved_case(const json& study_doc, const std::string& name) {
+  if (!study_doc.is_object()) return nullptr;
+  auto cs = study_doc.find("cases");
+  if (cs == study_doc.end() || !cs->is_object() || !cs->contains(name) || !(*cs)[name].is_object()) return nullptr;
+  ProblemList ignored;  // a broken chain gives null
+  return Resolver(*cs, ignored).resolve(name);
+}
+
 }  // namespace gridfree

@@ -10,6 +10,8 @@
 // A case's "name" is never inherited.
 #pragma once
 
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
@@ -20,5 +22,9 @@ namespace gridfree {
 // A case whose chain cannot be resolved is left out of the result (so it
 // draws no further problems), and a problem is added at its "extends".
 nlohmann::json resolve_case_extends(const nlohmann::json& study_doc, ProblemList& problems);
+
+// One case of the study with its "extends" chain resolved (the work of its
+// chain only); null when the case is missing or its chain is broken.
+nlohmann::json resolved_case(const nlohmann::json& study_doc, const std::string& name);
 
 }  // namespace gridfree

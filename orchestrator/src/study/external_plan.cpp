@@ -8,23 +8,36 @@
 
 namespace gridfree {
 
+namespace {
+
+// The means of x and y and the sums of squares about them of points (x, y).
+struct LineSums {
+  double mx = 0, my = 0, sxx = 0, sxy = 0;
+};
+
+LineSums line_sums(const std::vector<std::pair<double, double>>& xy) {
+  LineSums s;
+  for (const auto& [x, y] : xy) {
+    s.mx += x;
+    s.my += y;
+  }
+  s.mx /= static_cast<double>(xy.size());
+  s.my /= static_cast<double>(xy.size());
+  for (const auto& [x, y] : xy) {
+    s.sxx += (x - s.mx) * (x - s.mx);
+    s.sxy += (x - s.mx) * (y - s.my);
+  }
+  return s;
+}
+
+}  // namespace
+
 double fit_cpu_seconds(const std::vector<CostSample>& samples, double cells, double* exponent) {
   std::vector<std::pair<double, double>> xy;  // ln cells, ln cpu
   for (const auto& s : samples)
     if (s.cells > 0 && s.cpu_s > 0 && std::isfinite(s.cpu_s)) xy.emplace_back(std::log(s.cells), std::log(s.cpu_s));
   if (xy.empty() || !(cells > 0)) return NAN;
-  double mx = 0, my = 0;
-  for (const auto& [x, y] : xy) {
-    mx += x;
-    my += y;
-  }
-  mx /= static_cast<double>(xy.size());
-  my /= static_cast<double>(xy.size());
-  double sxx = 0, sxy = 0;
-  for (const auto& [x, y] : xy) {
-    sxx += (x - mx) * (x - mx);
-    sxy += (x - mx) * (y - my);
-  }
+  const auto [mx, my, sxx, sxy] = line_sums(xy);
   // One measured size (sxx = 0): CPU time proportional to cells.
   const double b = sxx > 1e-12 ? sxy / sxx : 1.0;
   if (exponent != nullptr) *exponent = b;
@@ -36,18 +49,7 @@ double fit_memory_mb(const std::vector<CostSample>& samples, double cells) {
   for (const auto& s : samples)
     if (s.cells > 0 && s.peak_rss_mb > 0 && std::isfinite(s.peak_rss_mb)) xy.emplace_back(s.cells, s.peak_rss_mb);
   if (xy.empty() || !(cells > 0)) return NAN;
-  double mx = 0, my = 0;
-  for (const auto& [x, y] : xy) {
-    mx += x;
-    my += y;
-  }
-  mx /= static_cast<double>(xy.size());
-  my /= static_cast<double>(xy.size());
-  double sxx = 0, sxy = 0;
-  for (const auto& [x, y] : xy) {
-    sxx += (x - mx) * (x - mx);
-    sxy += (x - mx) * (y - my);
-  }
+  const auto [mx, my, sxx, sxy] = line_sums(xy);
   double fit = 0;
   if (sxx <= 1e-12 * mx * mx) {
     fit = my * std::max(1.0, cells / mx);  // one size: its peak, proportional to cells above it

@@ -30,6 +30,23 @@ TEST(ExternalLabels, QuantityAndHFromTheDefinition) {
   EXPECT_EQ(sd.h_axis(), "h = 0.1 / N");
 }
 
+// A case that inherits its `external` section through "extends" is
+// labelled from the inherited section (the stored definition keeps
+// "extends"; the study resolves it).
+TEST(ExternalLabels, AnInheritedExternalSectionLabelsTheSeries) {
+  const json definition = json::parse(R"({"cases": {
+      "cavity": {"external": {"h": "0.1 / N",
+        "collect": {"quantities": {"ke": {"units": "m^2/s^2", "description": "mean kinetic energy"}}}}},
+      "cavity-nu2": {"extends": "cavity", "external": {"version": "v2"}}}})");
+  SeriesKey key{"cavity-nu2", "", 0, "", ""};
+  key.quantity = "ke";
+  SeriesData sd;
+  sd.case_name = "cavity-nu2";
+  label_external_series(definition, key, sd);
+  EXPECT_EQ(sd.value_axis(), "ke: mean kinetic energy [m^2/s^2]");
+  EXPECT_EQ(sd.h_axis(), "h = 0.1 / N");
+}
+
 TEST(ExternalLabels, SeriesChartNamesTheQuantityNotDpStar) {
   auto s = test::synthetic_summaries();
   const Chart physical = series_chart(s[0], 0);
