@@ -14,7 +14,7 @@
 #include "exec/local_executor.h"
 #include "job/memory_estimate.h"
 #include "sched/budget_claim.h"
-#include "sched/cost_history.h"
+#include "sched/external_estimates.h"
 #include "sched/external_result.h"
 #include "sched/job_timeout.h"
 #include "study/cost_model.h"
@@ -24,7 +24,6 @@
 #include "sched/series_finish.h"
 #include "sched/study_status.h"
 #include "store/owner.h"
-#include "study/adaptive_grids.h"
 
 namespace gridfree {
 namespace {
@@ -128,37 +127,6 @@ ProgressTally progress_tally(Store& store, const SchedulerOptions& o) {
   return ProgressTally(std::move(sources));
 }
 
-// What the loop needs from a study's definition, parsed once per study and
-// process (a definition grows with its cases; parsing it per job would
-// make the cost per job grow with the study).
-struct StudyFacts {
-  std::optional<double> timeout_s;  // the definition's timeout_s
-  bool adaptive = false;            // adaptive grids (study/adaptive_grids.h)
-  bool external = false;            // its cases are external (docs/EXTERNAL.md)
-  std::map<std::string, DeclaredCost> external_costs;  // external cases' declared cost (sched/external_result.h)
-};
-
-class StudyFactsCache {
- public:
-  explicit StudyFactsCache(Store& store) : store_(store) {}
-  const StudyFacts& of(long long study_id) {
-    auto it = facts_.find(study_id);
-    if (it != facts_.end()) return it->second;
-    StudyFacts f;
-    const nlohmann::json d = store_.study_definition(study_id);
-    if (d.is_object())
-      if (const auto t = d.find("timeout_s"); t != d.end() && t->is_number()) f.timeout_s = t->get<double>();
-    f.adaptive = adaptive_grids_of(d).has_value();
-    f.external_costs = declared_external_costs(d);
-    f.external = !f.external_costs.empty();
-    return facts_.emplace(study_id, f).first->second;
-  }
-
- private:
-  Store& store_;
-  std::map<long long, StudyFacts> facts_;
-};
-
 // A job's wall-clock limit: --timeout when given (0 = none), else the
 // study's timeout_s, else the default derived from the cost model (an
 // external job: from its estimate, `cost`).
@@ -169,50 +137,6 @@ double job_timeout_s(const SchedulerOptions& o, const StudyFacts& facts, const C
   if (cost) return external_job_timeout_s(*cost);
   return default_job_timeout_s(job.cells, o.threads_per_job, apriori_cost_ratio(job.spec, job.cells).ratio);
 }
-
-// Estimates of external jobs (study/external_plan.h): the declared figures
-// of their study, else the measured history of their case, read from the
-// database once and extended as this loop's jobs finish.
-class ExternalEstimates {
- public:
-  ExternalEstimates(Store& store, StudyFactsCache& facts) : store_(store), facts_(facts) {}
-  std::optional<ExternalJobCost> of(const ClaimedJob& job) {
-    if (!is_external_job(job.spec)) return std::nullopt;
-    return external_claimed_cost(job, facts_.of(job.study_id).external_costs, history());
-  }
-  // need(job) of the budget: the worker's model for gridfree's own jobs.
-  double need(const ClaimedJob& job) {
-    const auto c = of(job);
-    return c ? c->memory_bytes : job_memory_estimate_bytes(job.cells);
-  }
-  double need(long long study_id, long long job_id, const std::array<int, 3>& cells) {
-    if (!facts_.of(study_id).external) return job_memory_estimate_bytes(cells);
-    auto st = store_.db().prepare("SELECT spec_json FROM jobs WHERE id = ?");
-    st.bind_all(job_id);
-    if (!st.step()) return job_memory_estimate_bytes(cells);
-    ClaimedJob job;
-    job.job_id = job_id;
-    job.study_id = study_id;
-    job.spec = nlohmann::json::parse(st.as_text(0), nullptr, false);
-    job.cells = cells;
-    return need(job);
-  }
-  // A finished external job's measurement, for the jobs that follow.
-  void finished(const ClaimedJob& job, const ResultRow& row) {
-    if (!is_external_job(job.spec) || row.status != "converged" || !(row.cpu_s > 0 || row.peak_rss_mb > 0)) return;
-    const double cells = static_cast<double>(job.cells[0]) * job.cells[1] * job.cells[2];
-    history()[cost_similarity_key(job.spec)].push_back({cells, row.cpu_s, row.peak_rss_mb});
-  }
-
- private:
-  CostHistory& history() {
-    if (!history_) history_ = read_cost_history(store_.db(), true);
-    return *history_;
-  }
-  Store& store_;
-  StudyFactsCache& facts_;
-  std::optional<CostHistory> history_;
-};
 
 // "memory unknown (...)": why an external job's memory is not counted.
 std::string unknown_memory_note(const ExternalJobCost& c) { return "memory " + c.memory_basis; }
