@@ -5,7 +5,7 @@
 #   slurm_cluster.sh start DIR   writes DIR/slurm.conf, starts the daemons,
 #                                waits until `sinfo` shows the node idle;
 #                                prints `export SLURM_CONF=DIR/slurm.conf`
-#   slurm_cluster.sh stop DIR    stops every daemon started in DIR
+#   slurm_cluster.sh stop DIR    kills every daemon started in DIR
 #   slurm_cluster.sh ctld-stop DIR | ctld-start DIR   controller outage
 #
 # The node is this host under the name "gf<port>", eight CPUs or more; job
@@ -23,6 +23,16 @@ dir=${2:?usage: slurm_cluster.sh start|stop|ctld-stop|ctld-start DIR}
 mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
 conf=$dir/slurm.conf
+
+kill_pid() {  # kill_pid PIDFILE: KILL at once (the cluster is thrown away)
+  [ -f "$1" ] || return 0
+  pid=$(cat "$1" 2>/dev/null || true)
+  rm -f "$1"
+  [ -n "$pid" ] || return 0
+  kill -9 "$pid" 2>/dev/null || return 0
+  i=0
+  while kill -0 "$pid" 2>/dev/null && [ $i -lt 50 ]; do sleep 0.05; i=$((i + 1)); done
+}
 
 stop_pid() {  # stop_pid PIDFILE: TERM, then KILL after 5 s
   [ -f "$1" ] || return 0
@@ -183,9 +193,11 @@ start)
   echo "export SLURM_CONF=$conf"
   ;;
 stop)
-  stop_pid "$dir/slurmd.pid"
-  stop_pid "$dir/slurmctld.pid"
-  stop_pid "$dir/munge/munged.pid"
+  # Each daemon takes about 2 s to exit on TERM; a test's cluster keeps
+  # nothing, so its teardown kills them.
+  kill_pid "$dir/slurmd.pid"
+  kill_pid "$dir/slurmctld.pid"
+  kill_pid "$dir/munge/munged.pid"
   if [ -f "$dir/short_dir" ]; then
     short=$(cat "$dir/short_dir")
     case $short in /tmp/gfslurm.*) rm -rf "$short" ;; esac
