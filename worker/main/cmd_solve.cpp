@@ -1,6 +1,6 @@
 // gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--start nested|analytic]
 //                       [--vtk DIR] [--max-memory SIZE] [--progress FILE]
-//                       [--checkpoint FILE] [--resume FILE] [-v|-q]
+//                       [--checkpoint FILE] [--resume FILE] [--bed-cache DIR] [-v|-q]
 //
 // Parses the job (relative paths against the job file's folder), solves it,
 // and writes the result JSON atomically (temporary file + rename; stdout
@@ -11,7 +11,8 @@
 // atomically with every progress log line (≈ every 2 s) for `gridfree status`.
 // SIGTERM/SIGINT: stop after the current outer iteration, write the state to
 // --checkpoint FILE (if given) and exit 130 without a result; --resume FILE
-// continues from such a checkpoint (flow/checkpoint.h).
+// continues from such a checkpoint (flow/checkpoint.h). --bed-cache DIR:
+// generated beds are read from and kept in DIR (job/bed_cache.h).
 // A job with /case/external runs another CFD code instead (cmd_external.cpp,
 // docs/EXTERNAL.md).
 #include <malloc.h>
@@ -54,6 +55,7 @@ struct SolveCommandOptions {
   std::string start = "nested";
   std::string checkpoint_file;
   std::string resume_file;
+  std::string bed_cache;
   bool verbose = false;
   bool quiet = false;
 };
@@ -142,6 +144,7 @@ int run_solve(const SolveCommandOptions& o) {
   if (!o.vtk_dir.empty()) options.vtk_dir = std::filesystem::path(o.vtk_dir);
   if (!o.checkpoint_file.empty()) options.checkpoint_file = std::filesystem::path(o.checkpoint_file);
   if (!o.resume_file.empty()) options.resume_file = std::filesystem::path(o.resume_file);
+  if (!o.bed_cache.empty()) options.bed_cache = std::filesystem::path(o.bed_cache);
   options.stop_requested = [] { return stop_requested(); };
   const auto start = std::chrono::steady_clock::now();
   auto last = start;
@@ -225,6 +228,9 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   sub->add_option("--resume", opts->resume_file,
                   "continue from this checkpoint if it is this job's (missing: start from zero; "
                   "corrupt or another job's: warning, start from zero)");
+  sub->add_option("--bed-cache", opts->bed_cache,
+                  "keep generated beds in this folder and reuse them (same generator, case and worker; "
+                  "docs/PARTICLES.md \"Bed cache\")");
   sub->add_flag("-v,--verbose", opts->verbose, "debug output");
   sub->add_flag("-q,--quiet", opts->quiet, "warnings and errors only");
   sub->callback([opts, &exit_code] { exit_code = run_solve(*opts); });

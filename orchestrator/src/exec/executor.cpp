@@ -36,11 +36,17 @@ std::string describe(const JobExit& e) {
 }
 
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
-                                        int threads) {
-  return {worker.string(), "solve", (run_dir / "job.json").string(), "-o", (run_dir / "result.json").string(),
-          "--threads", std::to_string(threads < 1 ? 1 : threads), "--progress", progress_file(run_dir).string(),
-          "--checkpoint", checkpoint_file(run_dir).string(), "--resume", checkpoint_file(run_dir).string()};
+                                        int threads, const std::filesystem::path& bed_cache) {
+  std::vector<std::string> argv = {worker.string(), "solve", (run_dir / "job.json").string(), "-o",
+                                   (run_dir / "result.json").string(), "--threads",
+                                   std::to_string(threads < 1 ? 1 : threads), "--progress",
+                                   progress_file(run_dir).string(), "--checkpoint", checkpoint_file(run_dir).string(),
+                                   "--resume", checkpoint_file(run_dir).string()};
+  if (!bed_cache.empty()) argv.insert(argv.end(), {"--bed-cache", bed_cache.string()});
+  return argv;
 }
+
+std::filesystem::path bed_cache_dir(const std::filesystem::path& runs_root) { return runs_root / "beds"; }
 
 std::filesystem::path checkpoint_file(const std::filesystem::path& run_dir) { return run_dir / "checkpoint.bin"; }
 

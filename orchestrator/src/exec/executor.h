@@ -32,6 +32,8 @@ struct JobLaunch {
   bool external = false;
   double memory_bytes = NAN;
   std::string memory_basis;
+  // The worker's --bed-cache folder (bed_cache_dir); empty = none.
+  std::filesystem::path bed_cache;
 };
 
 // A job's state in an external queue, for `status` (Slurm: id, state, reason).
@@ -89,9 +91,14 @@ class Executor {
 
 // The worker command line (docs/INTERFACE.md §2) for a run directory:
 // result, progress and checkpoint files in it; the worker resumes from the
-// checkpoint when one is there (a stop or timeout left it).
+// checkpoint when one is there (a stop or timeout left it); generated beds
+// go through `bed_cache` unless it is empty.
 std::vector<std::string> worker_command(const std::filesystem::path& worker, const std::filesystem::path& run_dir,
-                                        int threads);
+                                        int threads, const std::filesystem::path& bed_cache = {});
+
+// Where the workers of a database keep generated beds: <runs_root>/beds
+// (worker/src/job/bed_cache.h; safe to delete between runs).
+std::filesystem::path bed_cache_dir(const std::filesystem::path& runs_root);
 
 // A job's run folder: <runs_root>/<first two hex digits of its hash>/<hash>
 // (256 shards: 50 000 jobs make about 200 entries per folder, not 50 000

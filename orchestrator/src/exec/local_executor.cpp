@@ -103,7 +103,7 @@ void LocalExecutor::release(long long job_id) {
 }
 
 void LocalExecutor::start(const JobLaunch& job) {
-  const auto argv_s = worker_command(worker_, job.run_dir, job.threads);
+  const auto argv_s = worker_command(worker_, job.run_dir, job.threads, job.bed_cache);
   std::vector<char*> argv;
   for (const auto& a : argv_s) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);

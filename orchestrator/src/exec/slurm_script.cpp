@@ -40,7 +40,7 @@ std::string array_script(const std::filesystem::path& worker, const SlurmArray& 
   s << "  *) echo \"gridfree: no run folder for array task $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\nesac\n";
   for (const auto& line : setup) s << line << "\n";
   // The worker command with the run folder left to the shell variable.
-  const auto cmd = worker_command(worker, "/RUN_DIR", a.threads);
+  const auto cmd = worker_command(worker, "/RUN_DIR", a.threads, a.bed_cache);
   std::string line;
   for (const auto& w : cmd) {
     std::string word = shell_quote(w);

@@ -24,6 +24,7 @@ struct SlurmArray {
   std::string name;                              // --job-name
   std::vector<std::filesystem::path> run_dirs;   // task i -> run_dirs[i]
   int threads = 1;                               // worker --threads
+  std::filesystem::path bed_cache;               // worker --bed-cache (empty: none)
   int cpus = 1;                                  // --cpus-per-task
   long time_minutes = 0;                         // --time (0 = not given)
   long mem_mb = 0;                               // --mem (0 = not given)

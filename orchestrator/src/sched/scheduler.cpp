@@ -251,6 +251,8 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
         launch.external = true;
         launch.memory_bytes = cost->memory_bytes;
         launch.memory_basis = cost->memory_basis;
+      } else {
+        launch.bed_cache = bed_cache_dir(o.runs_root);
       }
       launch.name = job_name(store, *job, f.label);
       try {

@@ -21,6 +21,7 @@ TEST(SlurmScript, EachTaskRunsTheWorkerInItsOwnFolderWhateverTheName) {
   SlurmArray a;
   a.run_dirs = {dir / "run one", dir / "it's two"};
   a.threads = 2;
+  a.bed_cache = dir / "beds of 'all'";
   for (const auto& d : a.run_dirs) fs::create_directories(d);
   std::ofstream(dir / "job.sh") << array_script(worker, a, {"export GF_SETUP_RAN=yes"});
   for (int task = 0; task < 2; ++task) {
@@ -37,6 +38,11 @@ TEST(SlurmScript, EachTaskRunsTheWorkerInItsOwnFolderWhateverTheName) {
     std::getline(args, job);
     EXPECT_EQ(first, "solve");
     EXPECT_EQ(job, (a.run_dirs[task] / "job.json").string());
+    std::string word, bed_cache;
+    while (std::getline(args, word) && word != "--bed-cache") {
+    }
+    std::getline(args, bed_cache);
+    EXPECT_EQ(bed_cache, a.bed_cache.string()) << "every task shares the database's bed cache";
   }
   EXPECT_NE(std::system(("SLURM_ARRAY_TASK_ID=7 sh '" + (dir / "job.sh").string() + "' 2>/dev/null").c_str()), 0);
 }

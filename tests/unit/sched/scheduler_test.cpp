@@ -134,6 +134,8 @@ TEST(Scheduler, EveryOutcomeIsRecordedAndTheStudyFinishes) {
   // Retried once: each crash, garbage and flaky job (4 + 4 + 4).
   EXPECT_EQ(sum.retried, 12);
   EXPECT_EQ(fake.started.size(), 24u + 12u);
+  // Every worker of the database shares one bed cache (job/bed_cache.h).
+  for (const JobLaunch& l : fake.started) EXPECT_EQ(l.bed_cache, dir / "runs" / "beds");
   const auto st = job_status_by_hash(store);
   EXPECT_EQ(st.at("ok0"), "done");
   EXPECT_EQ(st.at("flaky3"), "done");

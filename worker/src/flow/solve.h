@@ -46,6 +46,8 @@ struct SolveOptions {
   // nested start's coarse solve writes no checkpoint.
   std::function<bool()> stop_requested;
   std::optional<std::filesystem::path> checkpoint_file;
+  // Generated beds are read from and stored in this folder (job/bed_cache.h).
+  std::optional<std::filesystem::path> bed_cache;
   // Continue from this checkpoint: a missing file means start from zero; a
   // file that is not this job's (hash, grid) or is corrupt is ignored with a
   // warning, never partly used.

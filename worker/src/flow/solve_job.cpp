@@ -6,6 +6,7 @@
 
 #include "core/version.h"
 #include "flow/solve.h"
+#include "job/bed_cache.h"
 #include "job/job_hash.h"
 #include "particles/bed_summary.h"
 #include "particles/particle_io.h"
@@ -33,7 +34,8 @@ nlohmann::json bed_of(const ParticleSet& particles, const CaseSpec& c) {
 }  // namespace
 
 JobResult solve_job(const JobSpec& job, const SolveOptions& options) {
-  const ParticleSet particles = load_particles(job.case_spec.particles, job.case_spec);
+  const ParticleSet particles = load_particles(job.case_spec.particles, job.case_spec,
+                                               options.bed_cache ? cached_bed_generator(*options.bed_cache) : BedGenerator{});
   spdlog::debug("{} particles", particles.particles.size());
   nlohmann::json bed = bed_of(particles, job.case_spec);
   JobResult result = solve_with_particles(job, particles, options);

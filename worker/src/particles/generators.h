@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,10 @@ void check_generator(const GeneratorSpec& spec, const CaseSpec& case_spec, Probl
 // the placement cannot reach the requested count.
 GeneratedParticles generate_particles_with_report(const GeneratorSpec& spec, const CaseSpec& case_spec);
 ParticleSet generate_particles(const GeneratorSpec& spec, const CaseSpec& case_spec);
+
+// What turns a generator spec into particles: generate_particles_with_report,
+// or the same behind a cache (job/bed_cache.h). Empty = generate.
+using BedGenerator = std::function<GeneratedParticles(const GeneratorSpec&, const CaseSpec&)>;
 
 // "Thermal" particle velocities (the PC3t variant): every component of every
 // particle drawn from N(0, thermal_cm_s²) with its own seeded stream

@@ -32,7 +32,8 @@ void check_box(const ParticleSet& set, const std::array<double, 3>& domain_cm) {
 
 }  // namespace
 
-GeneratedParticles load_particles_with_report(const ParticleSource& source, const CaseSpec& case_spec) {
+GeneratedParticles load_particles_with_report(const ParticleSource& source, const CaseSpec& case_spec,
+                                              const BedGenerator& generate) {
   GeneratedParticles out;
   const auto L = case_spec.domain_cm();
   const double volume = L[0] * L[1] * L[2];
@@ -40,7 +41,7 @@ GeneratedParticles load_particles_with_report(const ParticleSource& source, cons
       [&](const auto& s) {
         using T = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<T, GeneratorSpec>) {
-          out = generate_particles_with_report(s, case_spec);
+          out = generate ? generate(s, case_spec) : generate_particles_with_report(s, case_spec);
         } else if constexpr (std::is_same_v<T, FileSpec>) {
           if (s.format == "csv") out.set = read_csv(s.path);
           else if (s.format == "mfix") out.set = read_mfix(s.path);
@@ -62,8 +63,8 @@ GeneratedParticles load_particles_with_report(const ParticleSource& source, cons
   return out;
 }
 
-ParticleSet load_particles(const ParticleSource& source, const CaseSpec& case_spec) {
-  return load_particles_with_report(source, case_spec).set;
+ParticleSet load_particles(const ParticleSource& source, const CaseSpec& case_spec, const BedGenerator& generate) {
+  return load_particles_with_report(source, case_spec, generate).set;
 }
 
 }  // namespace gridfree

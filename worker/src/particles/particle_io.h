@@ -57,9 +57,12 @@ void check_particles(const ParticleSet& set, const CaseSpec& case_spec, const Pa
 
 // The case's particles: generated, read (format "csv" | "mfix" | "lammps") and
 // checked, or none for a uniform (continuum) bed; then the case's thermal
-// velocities when thermal_cm_s > 0.
-ParticleSet load_particles(const ParticleSource& source, const CaseSpec& case_spec);
+// velocities when thermal_cm_s > 0. `generate` makes a generated bed
+// (default: generate_particles_with_report).
+ParticleSet load_particles(const ParticleSource& source, const CaseSpec& case_spec,
+                           const BedGenerator& generate = {});
 // The same, with per-region counts and solids fractions (for reports).
-GeneratedParticles load_particles_with_report(const ParticleSource& source, const CaseSpec& case_spec);
+GeneratedParticles load_particles_with_report(const ParticleSource& source, const CaseSpec& case_spec,
+                                              const BedGenerator& generate = {});
 
 }  // namespace gridfree
