@@ -45,12 +45,11 @@ test-unit: build
 # Unit and integration tests under AddressSanitizer + UndefinedBehaviorSanitizer
 # (GCC, -O1 -g1); verification tests are neither built nor run there (minutes
 # of numerics, no new paths). Nor are the tests that time a real Slurm cluster
-# or the worker against itself, count SQLite steps of large studies, pin
-# the bits of a 93 000-particle bed, print or render through Chromium, or
-# solve a dump ensemble end to end
+# or the worker against itself, count SQLite steps of large studies, print
+# or render through Chromium, or solve a dump ensemble end to end
 # (SANITIZE_EXCLUDE, docs/LIMITS.md): their code paths run there through the
-# fake-sbatch, timeout, small-bed, report and ensemble tests.
-SANITIZE_EXCLUDE ?= ^(SlurmCluster\.|RunTimeoutResume\.|SchedulerCost\.|GeneratedBedPin\.SscpStudyInstanceT1$$|ReportPrint\.|ReportRender\.Chromium|ReportRenderEnsembles\.|DumpEnsembleCli\.)
+# fake-sbatch, timeout, report and ensemble tests.
+SANITIZE_EXCLUDE ?= ^(SlurmCluster\.|RunTimeoutResume\.|SchedulerCost\.|ReportPrint\.|ReportRender\.Chromium|ReportRenderEnsembles\.|DumpEnsembleCli\.)
 test-sanitize: test-deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_SANITIZE=ON -DGRIDFREE_BUILD_BENCH=OFF \
 	  -DGRIDFREE_BUILD_VERIFICATION_TESTS=OFF >/dev/null
