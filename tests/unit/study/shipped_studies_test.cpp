@@ -55,6 +55,7 @@ TEST(ShippedStudies, ReducedStudiesAreMadeOfTheFullStudiesJobs) {
   expect_jobs_contained("bursting_bubble_paper_configurations.json", "bursting_bubble_paper.json", 3 * 18);
   expect_jobs_contained("sscp_reduced.json", "sscp_paper.json", 12 * 9);
   expect_jobs_contained("sscp_paper_t1_t2.json", "sscp_paper.json", 4 * 12);
+  expect_jobs_contained("sscp_fm18_reduced.json", "sscp_fm18.json", 12 * 9);
 }
 
 TEST(ShippedStudies, TheFm18BaselineExtendsTheFm18MediumStudysBaselineSeries) {
