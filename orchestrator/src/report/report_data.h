@@ -23,6 +23,7 @@ struct GridPoint {
   std::optional<double> dp_star;     // f, when the job produced one
   std::string reason;                // why not converged / failed
   std::string worker_outcome;        // the result's `outcome` word, '' for older results (report/stability_map.h)
+  int remedy_from_iteration = 0;     // numerics.stall_remedy acted from this outer iteration (0: it did not)
   double wall_s = 0, cpu_s = 0, peak_rss_mb = 0;
   int iterations = 0;
 };

@@ -132,6 +132,7 @@ StabilityMap stability_map(const std::vector<SeriesSummary>& series, double p_lo
       c.iterations = g.iterations;
       c.delta_star = g.delta_star;
       c.reason = g.reason;
+      c.remedy_from = g.remedy_from_iteration;
       if (is_failure_outcome(c.outcome)) ++r.failures;
       else if (c.outcome == "converged") ++r.converged;
       else ++r.pending;

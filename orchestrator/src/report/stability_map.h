@@ -40,6 +40,7 @@ struct StabilityCell {
   int iterations = 0;
   double delta_star = 0;         // the grid's actual Δ*
   std::string reason;
+  int remedy_from = 0;           // numerics.stall_remedy acted from this outer iteration (0: it did not)
 };
 
 // How the two extrapolations fared on one series (docs/REPORTS.md).

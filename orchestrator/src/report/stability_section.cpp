@@ -30,6 +30,7 @@ Column stab_num(std::string name, std::string title = {}) {
 // else a short word.
 std::string stability_cell_text(const StabilityCell& c) {
   if (!c.present) return "";
+  if (c.remedy_from > 0) return (c.outcome == "converged" ? "✓ " + std::to_string(c.iterations) : c.outcome) + " R";
   if (c.outcome == "converged") return "✓ " + std::to_string(c.iterations);
   if (c.outcome == "iteration_cap") return "cap";
   if (c.outcome == "timed_out") return "timeout";
@@ -78,6 +79,16 @@ std::string stability_methods_text(const MethodTally& t) {
   return out + "; least squares: " + t.least_squares;
 }
 
+// A grid on which numerics.stall_remedy acted, as the map's hover and the
+// table's reason say it.
+std::string remedy_note(int from_iteration) {
+  return "numerics.stall_remedy relaxed the deferred correction from outer iteration " +
+         std::to_string(from_iteration) + " (after a first stall)";
+}
+
+constexpr const char* kRemedyLegend = "R: numerics.stall_remedy acted (the deferred correction relaxed after a "
+                                      "first stall)";
+
 std::string stability_omitted_note(const StabilityMap& m) {
   if (m.omitted == 0) return {};
   return std::to_string(m.omitted) + " of " + std::to_string(m.series_total) +
@@ -113,7 +124,11 @@ Table stability_grid_table(const std::vector<SeriesSummary>& series) {
     for (const GridPoint* g : grids)
       t.rows.push_back({text_cell(s.label), number_cell(g->delta_star, 4),
                         integer_cell(static_cast<long long>(g->nx) * g->ny * g->nz), text_cell(grid_outcome(*g)),
-                        integer_cell(g->iterations), text_cell(g->reason), text_cell(g->job_hash)});
+                        integer_cell(g->iterations),
+                        text_cell(g->remedy_from_iteration > 0
+                                      ? (g->reason.empty() ? "" : g->reason + "; ") + remedy_note(g->remedy_from_iteration)
+                                      : g->reason),
+                        text_cell(g->job_hash)});
   }
   return t;
 }
@@ -152,7 +167,11 @@ std::string stability_svg(const StabilityMap& m) {
   const int cols = static_cast<int>(m.columns.size()), rows = static_cast<int>(m.rows.size());
   const int width = std::max(label_w + cols * kCellW + 8, 420);
   const int map_bottom = kTop + rows * kCellH;
-  const int height = map_bottom + 12 + kLegendRow * static_cast<int>(std::size(kOutcomeStyles)) + 4;
+  const bool remedy = std::any_of(m.rows.begin(), m.rows.end(), [](const StabilityRow& r) {
+    return std::any_of(r.cells.begin(), r.cells.end(), [](const StabilityCell& c) { return c.remedy_from > 0; });
+  });
+  const int height =
+      map_bottom + 12 + kLegendRow * (static_cast<int>(std::size(kOutcomeStyles)) + (remedy ? 1 : 0)) + 4;
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"stability-map\" width=\"" +
                     std::to_string(width) + "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " +
                     std::to_string(width) + " " + std::to_string(height) +
@@ -175,6 +194,7 @@ std::string stability_svg(const StabilityMap& m) {
       std::string tip = row.label + ", Δ* " + format_g(cell.delta_star, 4) + ": " + cell.outcome;
       if (cell.outcome == "converged") tip += " in " + std::to_string(cell.iterations) + " outer iterations";
       else if (!cell.reason.empty()) tip += ": " + cell.reason;
+      if (cell.remedy_from > 0) tip += "; " + remedy_note(cell.remedy_from);
       out += "<g class=\"cell outcome-" + cell.outcome + "\"><title>" + xml_escape(tip) + "</title><rect x=\"" +
              std::to_string(x + 1) + "\" y=\"" + std::to_string(y + 1) + "\" width=\"" + std::to_string(kCellW - 2) +
              "\" height=\"" + std::to_string(kCellH - 2) + "\" fill=\"" + outcome_style_of(cell.outcome).fill +
@@ -189,6 +209,7 @@ std::string stability_svg(const StabilityMap& m) {
            xml_escape(s.meaning) + "</text>\n";
     y += kLegendRow;
   }
+  if (remedy) out += "<text x=\"4\" y=\"" + std::to_string(y + 10) + "\">" + xml_escape(kRemedyLegend) + "</text>\n";
   return out + "</svg>\n";
 }
 

@@ -282,6 +282,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
       g.peak_rss_mb = p.peak_rss_mb;
       g.iterations = p.iterations;
       g.worker_outcome = p.worker_outcome;
+      g.remedy_from_iteration = p.remedy_from_iteration;
       sd.grids.push_back(std::move(g));
     }
     d.series.push_back(std::move(sd));

@@ -82,6 +82,7 @@ struct SeriesPoint {             // one job of a series, with its result if any
   int iterations = 0;
   double wall_s = 0, cpu_s = 0, peak_rss_mb = 0;
   std::string worker_outcome;    // the result's `outcome` (stalled | iteration_cap ...), '' before it existed
+  int remedy_from_iteration = 0; // extra.correction_relaxed_from_iteration (numerics.stall_remedy), 0 if none
 };
 
 struct ExtrapolationRow {

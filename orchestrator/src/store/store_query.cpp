@@ -75,7 +75,9 @@ std::vector<SeriesPoint> Store::series_points(long long series_id) {
       "CASE WHEN se.quantity = '' THEN r.dp_star WHEN json_valid(r.result_json) THEN "
       " json_extract(r.result_json, '$.quantities.' || se.quantity) END, COALESCE(r.iterations, 0), "
       "COALESCE(r.wall_s, 0), COALESCE(r.cpu_s, 0), COALESCE(r.peak_rss_mb, 0), "
-      "COALESCE(CASE WHEN json_valid(r.result_json) THEN json_extract(r.result_json, '$.outcome') END, '') "
+      "COALESCE(CASE WHEN json_valid(r.result_json) THEN json_extract(r.result_json, '$.outcome') END, ''), "
+      "COALESCE(CASE WHEN json_valid(r.result_json) THEN "
+      " json_extract(r.result_json, '$.extra.correction_relaxed_from_iteration') END, 0) "
       "FROM study_jobs sj JOIN series se ON se.id = sj.series_id JOIN jobs j ON j.id = sj.job_id "
       "LEFT JOIN results r ON r.job_id = j.id "
       "WHERE sj.series_id = ? AND sj.alignment_only = 0 ORDER BY sj.grid_index");
@@ -95,6 +97,7 @@ std::vector<SeriesPoint> Store::series_points(long long series_id) {
     p.cpu_s = st.as_double(12);
     p.peak_rss_mb = st.as_double(13);
     p.worker_outcome = st.as_text(14);
+    p.remedy_from_iteration = static_cast<int>(st.as_int(15));
     out.push_back(std::move(p));
   }
   return out;

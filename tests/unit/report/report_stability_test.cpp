@@ -121,6 +121,39 @@ TEST(StabilityMap, FailuresFirstOneColumnPerDeltaStarAndTheCapSaysWhatItOmits) {
   EXPECT_EQ(wide.rows[1][1].shown.rfind("✓ ", 0), 0u);
 }
 
+// A grid on which numerics.stall_remedy acted (the result's
+// extra.correction_relaxed_from_iteration) is marked "R" in the map and its
+// wide table, says from which iteration on hover and in the grid table, and
+// the legend explains the mark; a map without such a grid has no legend line.
+TEST(StabilityMap, AGridTheStallRemedyActedOnIsMarkedWithTheIteration) {
+  auto s = stability_series_with({{3.3, "converged"}, {2.0, "converged"}, {1.0, "stalled"}});
+  s.series.grids[0].iterations = 81;
+  s.series.grids[1].iterations = 325;
+  s.series.grids[1].remedy_from_iteration = 239;
+  s.series.grids[2].remedy_from_iteration = 266;
+  const StabilityMap m = stability_map({s}, 0.5, 2.1);
+  const std::string svg = stability_svg(m);
+  EXPECT_EQ(test::xml_problem(svg), "");
+  EXPECT_NE(svg.find(">✓ 325 R</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">✓ 81</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">stalled R</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("converged in 325 outer iterations; numerics.stall_remedy relaxed the deferred correction from "
+                     "outer iteration 239"),
+            std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("R: numerics.stall_remedy acted"), std::string::npos);
+  const Table wide = stability_wide_table(m);
+  EXPECT_EQ(wide.rows[0][2].shown, "✓ 325 R");
+  const Table grids = stability_grid_table({s});
+  ASSERT_EQ(grids.rows.size(), 3u);
+  EXPECT_EQ(grids.rows[1][5].exact, "numerics.stall_remedy relaxed the deferred correction from outer iteration 239 "
+                                    "(after a first stall)");
+  EXPECT_EQ(grids.rows[0][5].exact, "");
+
+  const auto plain = stability_series_with({{3.3, "converged"}, {2.0, "stalled"}});
+  EXPECT_EQ(stability_svg(stability_map({plain}, 0.5, 2.1)).find("R: numerics.stall_remedy"), std::string::npos);
+}
+
 TEST(StabilitySection, EveryReportHasTheMapItsCsvAndTheWordStability) {
   const ReportContent c = build_report_content(test::synthetic_study(), test::fake_extrapolation);
   const std::string html = stability_section_html(c);

@@ -124,5 +124,50 @@ TEST(ShippedStudies, TheSixInstanceFm18StudyIsSscpPaperWithThePapersTransfer) {
   EXPECT_EQ(shared_jobs(fm18, hashes_of(expanded("sscp_fm18_t1_t2.json"))), 4u * 12u);
 }
 
+// studies/stability_remedy.json is the stability study's Re_p 300 cells
+// with stall_remedy "relax_correction" and nothing else changed, so its map
+// sets the option's effect beside the default's cell by cell
+// (docs/SOLVER.md "The remedy on the map").
+TEST(ShippedStudies, TheRemedyStudyIsTheStabilityStudysRe300CellsWithTheRemedy) {
+  std::set<std::string> stability_docs;
+  for (const auto& j : expanded("stability.json").jobs) stability_docs.insert(j.doc.dump());
+  const auto remedy = expanded("stability_remedy.json");
+  EXPECT_EQ(remedy.jobs.size(), 144u);
+  for (const auto& j : remedy.jobs) {
+    auto doc = j.doc;
+    ASSERT_EQ(doc["numerics"].value("stall_remedy", ""), "relax_correction") << doc.dump();
+    doc["numerics"].erase("stall_remedy");
+    EXPECT_TRUE(stability_docs.count(doc.dump())) << "not a cell of studies/stability.json: " << doc.dump();
+  }
+}
+
+// studies/stability_envelope.json measures the solver under its default
+// settings (docs/SOLVER.md "The envelope under the default settings"): every
+// job leaves the numerics at their defaults but for the stall window that
+// ends a limit cycle, and the iteration cap, which no job reaches.
+TEST(ShippedStudies, TheEnvelopeStudyRunsTheDefaultNumerics) {
+  const auto ex = expanded("stability_envelope.json");
+  EXPECT_EQ(ex.jobs.size(), 250u);
+  const nlohmann::json defaults_deposition = {{"kind", "diffusion"}, {"fwhm_dp", 6.0}};
+  for (const auto& j : ex.jobs) {
+    const auto& n = j.doc["numerics"];
+    for (const auto& [key, value] : n.items()) {
+      const std::set<std::string> allowed = {"grid",        "convection",     "drag",        "deposition",
+                                             "tolerances",  "max_iterations", "stall_window"};
+      EXPECT_TRUE(allowed.count(key)) << "numerics." << key << " is not at its default";
+    }
+    EXPECT_EQ(n.value("convection", ""), "superbee");
+    EXPECT_EQ(n.value("drag", ""), "bvk");
+    EXPECT_EQ(n["deposition"], defaults_deposition) << n.dump();
+    if (n.contains("tolerances")) {
+      for (const auto& [key, value] : n["tolerances"].items()) {
+        const double expected = key == "steady" ? 1e-5 : key == "filter" ? 1e-10 : key == "linear" ? 1e-2 : -1;
+        EXPECT_EQ(value.get<double>(), expected) << "tolerances." << key;
+      }
+    }
+    EXPECT_EQ(n.value("stall_window", 0), 200);
+  }
+}
+
 }  // namespace
 }  // namespace gridfree
