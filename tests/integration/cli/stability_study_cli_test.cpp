@@ -1,11 +1,13 @@
 // The shipped stability study (studies/stability.json) in a reduced form,
 // run end to end with the real worker: the dense bed at Re_p 0.1 and 300,
 // central and first-order upwind, the filter narrower than every cell
-// (FWHM 1 d) and centroid deposition, on the grids Δ* 3.3 … 1.0 (40 jobs,
-// about 10 s of CPU). The outcome of every cell is the one written down in
-// docs/SOLVER.md "Robustness envelope": centroid deposition is invalid
-// (ε_s ≥ 1 in a cell) from Δ* 1.4 down; central at Re_p 300 diverges with
-// the narrow filter from Δ* 1.4 down and, with centroid deposition, stalls
+// (FWHM 1 d) and centroid deposition, on the grids Δ* 3.3 … 1.4 (32 jobs;
+// the study's Δ* 1 grid, which held 64 % of the cells and no outcome the
+// others lack, is left out to keep the test quick under AddressSanitizer).
+// The outcome of every cell is the one written down in docs/SOLVER.md
+// "Robustness envelope": centroid deposition is invalid (ε_s ≥ 1 in a cell)
+// at Δ* 1.4; central at Re_p 300 diverges with the narrow filter at Δ* 1.4
+// and, with centroid deposition, stalls
 // at Δ* 2.5 and diverges at 2.0 (its dp* wandering by 100 % a window: no
 // stall); everything else converges. Every converged value is checked
 // against an independent one, upwind's on the same grid and transfer:
@@ -39,7 +41,7 @@ using gridfree::test_support::shell_quote;
 using gridfree::test_support::sqlite_query;
 
 // studies/stability.json reduced: two cases, two schemes, the narrow filter,
-// five grids.
+// four grids.
 nlohmann::json reduced_stability_study() {
   std::ifstream in(kSourceDir / "studies/stability.json");
   nlohmann::json s = nlohmann::json::parse(in);
@@ -49,7 +51,7 @@ nlohmann::json reduced_stability_study() {
   s["cases"] = cases;
   s["factors"]["convection"] = {"central", "fou"};
   s["factors"]["fwhm_dp"] = {1};
-  s["grids"]["delta_star"] = {3.3, 2.5, 2.0, 1.4, 1.0};
+  s["grids"]["delta_star"] = {3.3, 2.5, 2.0, 1.4};
   return s;
 }
 
@@ -59,13 +61,12 @@ std::map<std::string, std::string> expected_outcomes() {
   for (const char* re : {"dense-Re0.1", "dense-Re300"})
     for (const char* scheme : {"central", "fou"})
       for (const char* dep : {"diffusion", "centroid"})
-        for (const char* h : {"3.3", "2.5", "2", "1.4", "1"})
+        for (const char* h : {"3.3", "2.5", "2", "1.4"})
           out[std::string(re) + " " + scheme + " " + dep + " " + h] = "converged";
   for (const char* re : {"dense-Re0.1", "dense-Re300"})
     for (const char* scheme : {"central", "fou"})
-      for (const char* h : {"1.4", "1"}) out[std::string(re) + " " + scheme + " centroid " + h] = "invalid";
+      out[std::string(re) + " " + scheme + " centroid 1.4"] = "invalid";
   out["dense-Re300 central diffusion 1.4"] = "diverged";
-  out["dense-Re300 central diffusion 1"] = "diverged";
   out["dense-Re300 central centroid 2.5"] = "stalled";
   out["dense-Re300 central centroid 2"] = "diverged";
   return out;
@@ -141,7 +142,7 @@ TEST(StabilityStudy, EveryCellHasTheDocumentedOutcomeAndNoConvergedValueIsWrong)
   const auto text = gridfree::test_support::run_merged("cd " + shell_quote(dir.string()) + " && " +
                                                        shell_quote(kGridfreeExe.string()) +
                                                        " status stability-reduced --db g.sqlite");
-  EXPECT_NE(text.text.find("grids by outcome (stability): 28 converged, 3 diverged, 8 invalid, 1 stalled"),
+  EXPECT_NE(text.text.find("grids by outcome (stability): 25 converged, 2 diverged, 4 invalid, 1 stalled"),
             std::string::npos)
       << text.text;
 
