@@ -271,6 +271,27 @@ TEST(Store, SeriesCompletionExtrapolationAndStudyStatus) {
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM pragma_foreign_key_check"), 0);
 }
 
+// A grid on which numerics.stall_remedy acted carries the iteration it
+// began at (the result's extra.correction_relaxed_from_iteration) to the
+// report's stability map (docs/REPORTS.md); 0 for any other grid.
+TEST(Store, SeriesPointsCarryTheIterationTheStallRemedyActedFrom) {
+  Store store(test_support::fresh_db_path("store_test", "remedy"));
+  auto [s, ex] = make_study("a", 1, 2, "t");
+  const auto sub = store.submit(s, ex);
+  int n = 0;
+  while (auto job = store.claim_next(sub.study_id, "me")) {
+    auto r = converged(1159, 1);
+    if (n++ == 0) r.result_json = R"({"outcome": "converged", "extra": {"correction_relaxed_from_iteration": 239}})";
+    store.record_result(job->job_id, "me", r);
+  }
+  const auto ready = store.series_ready(sub.study_id);
+  ASSERT_EQ(ready.size(), 1u);
+  const auto pts = store.series_points(ready[0].id);
+  ASSERT_EQ(pts.size(), 2u);
+  EXPECT_EQ(pts[0].remedy_from_iteration + pts[1].remedy_from_iteration, 239);
+  EXPECT_EQ(pts[0].remedy_from_iteration * pts[1].remedy_from_iteration, 0);
+}
+
 TEST(Store, CancelStopsQueuedJobsAndResubmitResumes) {
   Store store(test_support::fresh_db_path("store_test", "cancel"));
   auto [s, ex] = make_study("a", 1, 3, "t");
