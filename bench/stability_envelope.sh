@@ -14,14 +14,16 @@
 #                       writes OUT_DIR/stability_envelope.svg, the chart of
 #                       outer iterations and outcome over Δ* per bed and Re_p
 #                       (docs/figures/stability_envelope.svg is a copy)
-#   stability_heldout   the held-out scenes (docs/SOLVER.md "Held-out scenes")
+#   stability_heldout   the held-out scenes (docs/SOLVER.md "Held-out scenes");
+#                       bench/stability_heldout_check.py then checks every
+#                       converged value against independent estimates
 #   stability_remedy    the limit-cycle cells with stall_remedy relax_correction
 # Each prints the table, the count of each outcome and the jobs' CPU seconds.
 #
 #   bench/stability_envelope.sh BIN_DIR OUT_DIR [-j N] [--study NAME]
 set -euo pipefail
 if [[ $# -lt 2 ]]; then
-  echo "usage: $0 BIN_DIR OUT_DIR [-j N]" >&2
+  echo "usage: $0 BIN_DIR OUT_DIR [-j N] [--study NAME]" >&2
   exit 2
 fi
 bin="$(cd "$1" && pwd)"; out="$2"; shift 2
