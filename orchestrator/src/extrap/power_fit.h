@@ -7,8 +7,8 @@
 //     S(p) = min_{f0,c} Σ_i w_i (f_i − f0 − c h_i^p)²,
 //
 // and p is its GLOBAL minimiser over p ∈ [−p_max, −p_min] ∪ [p_min, p_max]
-// (default ±[0.01, 10]): a dense log-spaced scan of each side locates the best
-// bracket, golden-section search narrows it, and the root of the analytic
+// (default ±[0.01, 10]): a dense log-spaced scan of each side (S in closed
+// form, power_law_scan_profile) locates the best bracket, golden-section search narrows it, and the root of the analytic
 // derivative (envelope theorem, (f0, c) at their optimum for that p)
 //
 //     dS/dp = −2 Σ_i w_i r_i c h_i^p ln h_i,    r_i = f_i − f0 − c h_i^p,
@@ -47,5 +47,9 @@ PowerLawFit fit_power_law(const Series& s, const std::vector<double>& w,
 
 // S(p) in the user's units (for tests and plots).
 double power_law_profile(const Series& s, const std::vector<double>& w, double p);
+
+// The same S(p) as the dense scan computes it (the closed form of the
+// centred two-parameter fit, no QR: 4000 of them per fit), for tests.
+double power_law_scan_profile(const Series& s, const std::vector<double>& w, double p);
 
 }  // namespace gridfree

@@ -80,6 +80,29 @@ TEST(ExtrapPowerFit, GlobalMinimumBeatsADenseIndependentScan) {
   }
 }
 
+TEST(ExtrapPowerFit, ScanProfileIsTheQrProfile) {
+  // The scan's closed form against the QR at every order of the search
+  // range, on scattered data (S well above rounding: 1e-10 relative) and on
+  // an exact power law, where S at the true order is rounding only: there
+  // the two may differ by the rounding of the data, S of ~1e-24 of the
+  // data's squared range, nowhere near the minimum's neighbours.
+  const auto h = test::oscillatory_h();
+  const Series osc = make_series(h, test::oscillatory_f(h));
+  const Series exact = make_series(h, test::power_law(h, 1158.8, 0.37, 1.6));
+  for (const Weighting weighting : {Weighting::kInverseH, Weighting::kUniform}) {
+    const auto w = fit_weights(h, weighting);
+    std::vector<double> orders{1.6, 1.6 * (1 + 1e-6), 1.6 * (1 - 1e-4)};  // at and beside the exact order
+    for (int k = 0; k <= 400; ++k) orders.push_back((k % 2 ? -1 : 1) * 0.01 * std::pow(1000.0, (k / 2) / 200.0));
+    for (const double p : orders) {
+      expect_rel(power_law_scan_profile(osc, w, p), power_law_profile(osc, w, p), 1e-10);
+      const double range2 = std::pow(exact.f.back() - exact.f.front(), 2);
+      EXPECT_NEAR(power_law_scan_profile(exact, w, p), power_law_profile(exact, w, p),
+                  1e-10 * power_law_profile(exact, w, p) + 1e-24 * range2)
+          << "p = " << p;
+    }
+  }
+}
+
 TEST(ExtrapPowerFit, MinimumOnTheBoundaryIsNotFound) {
   // f = 1 + ln h is the p -> 0 limit of (h^p − 1)/p: S keeps falling towards
   // |p| = 0.01, the edge of the search range.
