@@ -18,6 +18,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/process_identity.h"
+#include "exec/exit_notice.h"
 #include "exec/worker_progress.h"
 
 extern char** environ;
@@ -141,6 +142,7 @@ void LocalExecutor::start(const JobLaunch& job) {
   c.timeout_s = job.timeout_s;
   c.launch_grace_s = stop_grace_for_run(job.run_dir, stop_grace_s_);
   c.gate = gate[1];
+  c.exit_notice = open_exit_notice(pid);
   if (job.timeout_s > 0)
     c.deadline = c.started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(job.timeout_s));
   running_[pid] = std::move(c);
@@ -215,6 +217,7 @@ std::optional<JobExit> LocalExecutor::reap_one() {
     // Anything the worker left in its group goes with it.
     killpg(it->first, SIGKILL);
     if (it->second.gate >= 0) ::close(it->second.gate);
+    if (it->second.exit_notice >= 0) ::close(it->second.exit_notice);
     running_.erase(it);
     return e;
   }
@@ -231,8 +234,13 @@ std::optional<JobExit> LocalExecutor::wait_any(double timeout_s) {
     }
     enforce_deadlines();
     if (auto e = reap_one()) return e;
-    if (running_.empty() || Clock::now() >= until) return std::nullopt;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    const auto now = Clock::now();
+    if (running_.empty() || now >= until) return std::nullopt;
+    std::vector<int> notices;
+    for (const auto& [pid, c] : running_) notices.push_back(c.exit_notice);
+    // Every 20 ms at least (deadlines), at once when a worker exits.
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(until - now);
+    wait_for_exit_notice(notices, std::min(left, std::chrono::milliseconds(20)));
   }
 }
 
@@ -280,6 +288,8 @@ std::vector<long long> LocalExecutor::kill_all() {
     }
     if (!until.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  for (const auto& [pid, c] : running_)
+    if (c.exit_notice >= 0) ::close(c.exit_notice);
   running_.clear();
   for (const auto& e : failed_launches_) ids.push_back(e.job_id);
   failed_launches_.clear();

@@ -2,7 +2,8 @@
 // process group (so a timeout or shutdown kills it and anything it started,
 // and a terminal's Ctrl-C reaches only the orchestrator), stdin from
 // /dev/null, stdout+stderr into <run_dir>/worker.log. Finished children are
-// found by waitpid(WNOHANG) polling. A timeout or a shutdown sends SIGTERM to
+// found by waitpid(WNOHANG), checked every 20 ms (deadlines) and as soon as
+// a child's pidfd says it exited (exec/exit_notice.h). A timeout or a shutdown sends SIGTERM to
 // the whole group (the worker writes a checkpoint and exits 130) and SIGKILL
 // after the grace period: stop_grace_s (kStopGraceSeconds) plus 1.5 × the
 // worker's longest outer iteration so far (exec/worker_progress.h).
@@ -53,6 +54,7 @@ class LocalExecutor : public Executor {
     std::optional<Clock::time_point> kill_at;  // SIGTERM sent: SIGKILL then
     double launch_grace_s = 0;  // from the progress file an earlier attempt left
     int gate = -1;  // write end of the hold pipe until released
+    int exit_notice = -1;  // its pidfd (exec/exit_notice.h), -1 without
   };
   std::optional<JobExit> reap_one();
   Clock::duration grace_for(const Child& c) const;
