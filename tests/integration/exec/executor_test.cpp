@@ -119,10 +119,12 @@ TEST(LocalExecutor, TimeoutSendsSigtermSoTheWorkerCanCheckpoint) {
 
 // A worker that finished as the timeout's SIGTERM reached it exits 0 with its
 // result: that is an ordinary exit, and the result is kept, not retried.
+// The timeout (1.5 s, as above) must come after the fake's shell has set its
+// SIGTERM trap; with 0.5 s a loaded machine sometimes started it too late.
 TEST(LocalExecutor, AResultWrittenAsTheTimeoutArrivesIsAnOrdinaryExit) {
   const auto root = temp_dir("timeout_late_result");
   LocalExecutor ex(kFakeWorker, kStopGraceSeconds);
-  ex.start(launch(root, 1, "lateok", 0.5));
+  ex.start(launch(root, 1, "lateok", 1.5));
   const auto e = wait_for(ex);
   EXPECT_EQ(e.how, JobExit::How::kExited);
   EXPECT_EQ(e.code, 0);
