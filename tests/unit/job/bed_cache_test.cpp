@@ -106,6 +106,13 @@ TEST(BedCache, ADamagedOrForeignFileIsRefusedWithItsReason) {
   EXPECT_FALSE(read_cached_bed(file, key, why));
   EXPECT_NE(why.find("bytes of particles"), std::string::npos) << why;
 
+  {  // a header that states a count far beyond the file: refused before allocating for it
+    std::ofstream f(file, std::ios::trunc);
+    f << "gridfree-bed 1\n" << key << "\n{\"count\":1000000000000000,\"regions\":[],\"payload_sha256\":\"x\"}\n";
+  }
+  EXPECT_FALSE(read_cached_bed(file, key, why));
+  EXPECT_NE(why.find("bytes of particles"), std::string::npos) << why;
+
   std::ofstream(file) << "something else\n";
   EXPECT_FALSE(read_cached_bed(file, key, why));
   EXPECT_EQ(why, "not a gridfree bed file");

@@ -12,6 +12,7 @@
 
 #include <bit>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -117,16 +118,28 @@ std::optional<GeneratedParticles> read_cached_bed(const std::filesystem::path& f
     return std::nullopt;
   }
   const nlohmann::json header = nlohmann::json::parse(header_line, nullptr, false);
-  if (header.is_discarded() || !header.contains("count") || !header.contains("payload_sha256")) {
+  if (header.is_discarded() || !header.contains("count") || !header["count"].is_number_unsigned() ||
+      !header.contains("payload_sha256") || !header["payload_sha256"].is_string()) {
     why = "unreadable header";
     return std::nullopt;
   }
-  const auto count = header.value("count", std::size_t{0});
+  // The particles' size from the file itself, before allocating for the
+  // count a damaged header may state.
+  const auto count = header["count"].get<std::size_t>();
+  std::error_code ec;
+  const auto file_bytes = std::filesystem::file_size(file, ec);
+  const auto at = static_cast<std::uintmax_t>(in.tellg());
+  const std::uintmax_t stored = ec || file_bytes < at ? 0 : file_bytes - at;
+  if (count > stored / (kDoublesPerParticle * sizeof(double)) ||
+      stored != count * kDoublesPerParticle * sizeof(double)) {
+    why = "holds " + std::to_string(stored) + " bytes of particles, not " +
+          std::to_string(count * kDoublesPerParticle * sizeof(double));
+    return std::nullopt;
+  }
   std::vector<double> payload(count * kDoublesPerParticle);
-  in.read(reinterpret_cast<char*>(payload.data()), static_cast<std::streamsize>(payload.size() * sizeof(double)));
-  if (static_cast<std::size_t>(in.gcount()) != payload.size() * sizeof(double) || in.peek() != EOF) {
-    why = "holds " + std::to_string(in.gcount()) + " bytes of particles, not " +
-          std::to_string(payload.size() * sizeof(double));
+  in.read(reinterpret_cast<char*>(payload.data()), static_cast<std::streamsize>(stored));
+  if (static_cast<std::uintmax_t>(in.gcount()) != stored) {
+    why = "could not read its particles";
     return std::nullopt;
   }
   if (sha256_hex(bytes_of(payload)) != header.value("payload_sha256", std::string())) {
@@ -187,7 +200,7 @@ BedGenerator cached_bed_generator(std::filesystem::path dir, double min_seconds)
     const auto t0 = std::chrono::steady_clock::now();
     GeneratedParticles bed = generate_particles_with_report(spec, c);
     const double took = seconds_since(t0);
-    if (took >= min_seconds && bed.set.source.empty() && !bed.set.box_cm) {
+    if (took >= min_seconds) {
       try {
         write_cached_bed(file, key, bed);
         spdlog::info("bed: generated in {:.1f} s, stored in the cache ({})", took, file.string());
