@@ -26,6 +26,9 @@ namespace {
 constexpr double kMinPollS = 0.5, kMaxPollS = 30.0;  // adaptive squeue interval bounds
 constexpr double kFileCheckS = 0.1;                  // exit_code files of running tasks
 constexpr double kMaxBackoffS = 60.0;                // transient submit faults
+constexpr double kGatherS = 5.0;                     // a refill waits at most this long for more jobs
+
+bool is_running(const std::string& state) { return state == "RUNNING" || state == "COMPLETING"; }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -132,11 +135,24 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
 void SlurmExecutor::start(const JobLaunch& job) {
   std::filesystem::remove(job.run_dir / "exit_code");
   std::filesystem::remove(job.run_dir / "slurm_submit");
+  if (unsent_.empty()) gathered_at_ = Clock::now();
   unsent_.push_back(job);
 }
 
 void SlurmExecutor::flush() {
-  if (!unsent_.empty() && Clock::now() >= retry_at_ && !fatal_) submit_unsent();
+  if (submit_due()) submit_unsent();
+}
+
+bool SlurmExecutor::submit_due() const {
+  if (unsent_.empty() || fatal_ || Clock::now() < retry_at_) return false;
+  // A job claimed as another one ends would otherwise be one sbatch (and one
+  // array of one task) per job: it waits for others while enough of ours
+  // wait in the queue already, up to a tenth of an array or kGatherS.
+  const auto batch = std::max<std::size_t>(1, static_cast<std::size_t>(settings_.array_size.value_or(1000)) / 10);
+  if (unsent_.size() >= batch) return true;
+  const auto waiting = static_cast<long>(tasks_.size()) - running_now_;
+  if (waiting < 2L * slots_ + 8) return true;
+  return seconds_since(gathered_at_) >= kGatherS;
 }
 
 void SlurmExecutor::submit_unsent() {
@@ -288,6 +304,7 @@ void SlurmExecutor::finish(std::map<long long, Task>::iterator it, JobExit e) {
     mean_run_s_ = (mean_run_s_ * runs_seen_ + run_s) / (runs_seen_ + 1);
     ++runs_seen_;
   }
+  if (is_running(t.state)) --running_now_;
   t.state = "ENDED";  // left the queue, or about to
   t.reason.clear();
   note(t);
@@ -312,21 +329,24 @@ void SlurmExecutor::poll() {
     spdlog::warn("squeue failed ({}); will ask again", submit_message(r.exit_code, r.err));
     return;
   }
-  const auto queue = parse_squeue(r.out);
+  const QueueListing queue = parse_squeue(r.out);
   const auto now = Clock::now();
   for (auto it = tasks_.begin(); it != tasks_.end();) {
     Task& t = it->second;
-    auto q = queue.find(t.slurm_id);
-    if (q == queue.end()) {  // left the queue (finished, cancelled, purged)
+    const QueueEntry* q = queue.find(t.slurm_id);
+    if (q == nullptr) {  // left the queue (finished, cancelled, purged)
       auto next = std::next(it);
       finish(it, exit_of(t));
       it = next;
       continue;
     }
-    const bool changed = q->second.state != t.state || q->second.reason != t.reason;
-    t.state = q->second.state;
-    t.reason = q->second.reason;
-    t.used_s = q->second.used_s;
+    const bool changed = q->state != t.state || q->reason != t.reason;
+    if (changed) {
+      running_now_ += static_cast<int>(is_running(q->state)) - static_cast<int>(is_running(t.state));
+      t.state = q->state;
+      t.reason = q->reason;
+    }
+    t.used_s = q->used_s;
     t.polled_at = now;
     t.seen = true;
     if (changed) note(t);
@@ -381,7 +401,7 @@ std::optional<JobExit> SlurmExecutor::wait_any(double timeout_s) {
       return e;
     }
     if (fatal_) return std::nullopt;  // the caller stops (fatal_error())
-    if (!unsent_.empty() && Clock::now() >= retry_at_) {
+    if (submit_due()) {
       submit_unsent();
       continue;
     }
@@ -409,6 +429,7 @@ std::vector<long long> SlurmExecutor::kill_all() {
   }
   if (cancel.size() > 1) run_process(cancel);
   tasks_.clear();
+  running_now_ = 0;
   for (const auto& j : unsent_) ids.push_back(j.job_id);
   unsent_.clear();
   for (const auto& e : finished_) ids.push_back(e.job_id);

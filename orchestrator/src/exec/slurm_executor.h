@@ -3,7 +3,10 @@
 //   start()   gathers jobs; flush() groups them by size (cpus, time and
 //             memory limits) and submits each group as one
 //             `sbatch --array=0-K%N` (N = the -j slots), K <= array_size;
-//   poll      one `squeue --me` for all our jobs, at an interval that adapts
+//             while 2N+8 of ours wait in the queue, a refill waits for a
+//             tenth of array_size jobs or 5 s (submit_due);
+//   poll      one `squeue --me` for all our jobs (an array's waiting tasks
+//             on one line), at an interval that adapts
 //             to the run times seen (or the profile's poll_s); a finished
 //             task is noticed earlier by its <run_dir>/exit_code file;
 //   finished  exit code from the exit_code file, else `sacct`, else the
@@ -67,6 +70,7 @@ class SlurmExecutor : public Executor {
     bool seen = false;              // listed by squeue at least once
   };
   void submit_unsent();
+  bool submit_due() const;  // the gathered jobs go to sbatch now
   void submit_group(const std::vector<JobLaunch>& group, const SlurmArray& shape);
   void poll();
   void check_exit_files();
@@ -83,6 +87,8 @@ class SlurmExecutor : public Executor {
   SlurmSettings settings_;
   int slots_;
   std::vector<JobLaunch> unsent_;            // gathered, or waiting out a transient fault
+  Clock::time_point gathered_at_{};          // when the oldest of unsent_ was gathered
+  int running_now_ = 0;                      // tasks_ RUNNING or COMPLETING as last polled
   Clock::time_point retry_at_{};
   double backoff_s_ = 0;
   Clock::time_point last_poll_{}, last_file_check_{};

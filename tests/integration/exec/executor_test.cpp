@@ -221,8 +221,8 @@ TEST(ProcessIdentity, OnlyTheExactProcessIsKilled) {
 }
 
 // Fake Slurm: sbatch runs every task of the array at once and prints an id;
-// squeue shows nothing (the jobs have left the queue); sacct answers from a
-// file. (tests/integration/slurm/ runs the real one.)
+// squeue shows the file `squeue` (nothing when absent: the jobs have left
+// the queue); sacct answers from a file. (tests/integration/slurm/ runs the real one.)
 fs::path fake_slurm(const fs::path& dir) {
   const auto bin = dir / "bin";
   fs::create_directories(bin);
@@ -241,7 +241,7 @@ fs::path fake_slurm(const fs::path& dir) {
                    "  i=0; while [ $i -le $last ]; do SLURM_ARRAY_TASK_ID=$i sh \"$script\" >/dev/null 2>&1; i=$((i + 1)); done ;;\n"
                    "esac\n"
                    "echo \"$n;cluster\"\n");
-  script("squeue", "exit 0\n");
+  script("squeue", "cat \"" + (dir / "squeue").string() + "\" 2>/dev/null\nexit 0\n");
   script("sacct", "cat \"" + (dir / "sacct").string() + "\"\n");
   script("scancel", "echo \"$@\" >> \"" + (dir / "scancelled").string() + "\"\n");
   return bin;
@@ -392,6 +392,49 @@ TEST(SlurmExecutor, APermanentSubmitFailureIsFatalAndSpendsNoAttempt) {
   auto ids = ex.kill_all();
   std::sort(ids.begin(), ids.end());
   EXPECT_EQ(ids, (std::vector<long long>{1, 2}));
+  setenv("PATH", old_path.c_str(), 1);
+}
+
+// Jobs claimed as others end are gathered while enough of ours wait in the
+// queue (2N+8, N = 2 here): one sbatch per tenth of array_size (100 here),
+// or after 5 s, not one sbatch per job. With few waiting they go at once.
+TEST(SlurmExecutor, RefillsAreGatheredWhileTheQueueHoldsEnoughWaitingTasks) {
+  const auto dir = temp_dir("slurm_gather");
+  const auto bin = fake_slurm(dir);
+  const std::string old_path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
+  std::ofstream(dir / "mode") << "hold";
+  auto submissions = [&] {
+    std::ifstream in(dir / "sbatch_args");
+    std::size_t n = 0;
+    for (std::string l; std::getline(in, l);) ++n;
+    return n;
+  };
+  SlurmSettings settings;
+  settings.poll_s = 3600;  // one poll, at the first wait
+  SlurmExecutor ex(kFakeWorker, dir / "runs", settings, 2);
+  long long id = 0;
+  for (int i = 0; i < 20; ++i) ex.start(launch(dir / "runs", ++id, "ok"));
+  ex.flush();  // nothing of ours in the queue: at once
+  EXPECT_EQ(submissions(), 1u);
+  // Slurm shows the 20 waiting, on one line (exec/slurm_queue.h).
+  std::ofstream(dir / "squeue") << "100_[0-19%2]|PENDING|JobArrayTaskLimit|0:00\n";
+  EXPECT_FALSE(ex.wait_any(0.1));
+  ex.start(launch(dir / "runs", ++id, "ok"));
+  ex.flush();
+  EXPECT_EQ(submissions(), 1u);  // gathered
+  EXPECT_EQ(ex.external_id(id), "");
+  for (int i = 0; i < 99; ++i) ex.start(launch(dir / "runs", ++id, "ok"));
+  ex.flush();  // 100 gathered: one array
+  EXPECT_EQ(submissions(), 2u);
+  EXPECT_EQ(ex.external_id(id), "slurm:101_99");
+  ex.start(launch(dir / "runs", ++id, "ok"));
+  EXPECT_FALSE(ex.wait_any(4.0));
+  EXPECT_EQ(submissions(), 2u);
+  EXPECT_FALSE(ex.wait_any(1.5));  // 5 s after it was gathered
+  EXPECT_EQ(submissions(), 3u);
+  EXPECT_EQ(ex.in_flight(), 121u);
+  ex.kill_all();
   setenv("PATH", old_path.c_str(), 1);
 }
 
