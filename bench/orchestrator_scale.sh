@@ -18,7 +18,11 @@
 # (tests/integration/slurm/slurm_cluster.sh; root, Slurm installed), `run
 # --executor slurm --mem 64 --time 10` (fixed small: the cost model would ask
 # the finest grids for more memory than the node has); BENCH_J then counts
-# array tasks at once (default 8, the node's CPUs).
+# array tasks at once (default 8, the node's CPUs). BENCH_EXECUTOR=slurm-stub:
+# the same flags, but sbatch/squeue/scancel/sacct are bench/slurm_stub.py,
+# which runs each array's tasks on this machine at once (-j of them at a
+# time, no controller): the executor's own cost, apart from Slurm's launch
+# rate (about 8 tiny tasks a second on a one-node Slurm here).
 #
 # Prints per size: jobs, wall s, jobs/s, the orchestrator's own CPU (user +
 # system of the `gridfree` process alone, read from /proc every 0.1 s, so
@@ -43,12 +47,21 @@ case ${BENCH_EXECUTOR:-local} in
          trap '"$here/tests/integration/slurm/slurm_cluster.sh" stop "$work/cluster"; rm -rf "$work"' EXIT
          eval "$("$here/tests/integration/slurm/slurm_cluster.sh" start "$work/cluster")"
          executor_flags=(--executor slurm --mem 64 --time 10) ;;
-  *) echo "BENCH_EXECUTOR: local or slurm, not '${BENCH_EXECUTOR}'" >&2; exit 2 ;;
+  slurm-stub) jobs_at_once=${BENCH_J:-8}
+         mkdir -p "$work/stub_bin"
+         for tool in sbatch squeue scancel sacct; do  # python3 by its path: BENCH_EXPORT=0 narrows PATH
+           printf '#!/bin/sh\nexec %q %q --as %s "$@"\n' "$(python3 -c "import sys; print(sys.executable)")" "$here/bench/slurm_stub.py" "$tool" \
+             > "$work/stub_bin/$tool"
+           chmod +x "$work/stub_bin/$tool"
+         done
+         export SLURM_STUB_DIR="$work/stub_state" PATH="$work/stub_bin:$PATH"
+         executor_flags=(--executor slurm --mem 64 --time 10) ;;
+  *) echo "BENCH_EXECUTOR: local, slurm or slurm-stub, not '${BENCH_EXECUTOR}'" >&2; exit 2 ;;
 esac
 path_for_run=$PATH
 if [[ ${BENCH_EXPORT:-1} == 0 ]]; then  # the PATH's tools gridfree uses, without rsvg-convert
   mkdir -p "$work/no_converter"
-  for tool in sbatch squeue scancel scontrol sinfo; do
+  for tool in sbatch squeue scancel sacct scontrol sinfo; do
     ! command -v "$tool" >/dev/null || ln -s "$(command -v "$tool")" "$work/no_converter/$tool"
   done
   path_for_run="$work/no_converter"
