@@ -60,8 +60,9 @@ case ${BENCH_EXECUTOR:-local} in
 esac
 path_for_run=$PATH
 if [[ ${BENCH_EXPORT:-1} == 0 ]]; then  # the PATH's tools gridfree uses, without rsvg-convert
+  # (mv: the array script's, whose environment under Slurm is gridfree's)
   mkdir -p "$work/no_converter"
-  for tool in sbatch squeue scancel sacct scontrol sinfo; do
+  for tool in sbatch squeue scancel sacct scontrol sinfo mv; do
     ! command -v "$tool" >/dev/null || ln -s "$(command -v "$tool")" "$work/no_converter/$tool"
   done
   path_for_run="$work/no_converter"
