@@ -43,12 +43,13 @@ test-unit: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L unit
 
 # Unit and integration tests under AddressSanitizer + UndefinedBehaviorSanitizer
-# (GCC, -O1 -g1); verification tests are neither built nor run there (minutes
-# of numerics, no new paths). Nor are the tests that time a real Slurm cluster
-# or the worker against itself, count SQLite steps of large studies, print
-# or render through Chromium, or solve a dump ensemble end to end
-# (SANITIZE_EXCLUDE, docs/LIMITS.md): their code paths run there through the
-# fake-sbatch, timeout, report and ensemble tests.
+# (GCC, -g1; -O1 for the numeric modules, -O0 for the rest); verification
+# tests are neither built nor run there (minutes of numerics, no new paths).
+# Nor are the tests that time a real Slurm cluster or the worker against
+# itself, count SQLite steps of large studies, print or render through
+# Chromium, or solve a dump ensemble end to end (SANITIZE_EXCLUDE,
+# docs/LIMITS.md): their code paths run there through the fake-sbatch,
+# timeout, report and ensemble tests.
 SANITIZE_EXCLUDE ?= ^(SlurmCluster\.|RunTimeoutResume\.|SchedulerCost\.|ReportPrint\.|ReportRender\.Chromium|ReportRenderEnsembles\.|DumpEnsembleCli\.)
 test-sanitize: test-deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRIDFREE_SANITIZE=ON -DGRIDFREE_BUILD_BENCH=OFF \
