@@ -27,6 +27,7 @@ constexpr double kMinPollS = 0.5, kMaxPollS = 30.0;  // adaptive squeue interval
 constexpr double kFileCheckS = 0.1;                  // exit_code files of running tasks
 constexpr double kMaxBackoffS = 60.0;                // transient submit faults
 constexpr double kGatherS = 5.0;                     // a refill waits at most this long for more jobs
+constexpr int kDefaultArraySize = 1000;              // SlurmSettings::array_size when unset
 
 bool is_running(const std::string& state) { return state == "RUNNING" || state == "COMPLETING"; }
 
@@ -148,7 +149,7 @@ bool SlurmExecutor::submit_due() const {
   // A job claimed as another one ends would otherwise be one sbatch (and one
   // array of one task) per job: it waits for others while enough of ours
   // wait in the queue already, up to a tenth of an array or kGatherS.
-  const auto batch = std::max<std::size_t>(1, static_cast<std::size_t>(settings_.array_size.value_or(1000)) / 10);
+  const auto batch = std::max<std::size_t>(1, static_cast<std::size_t>(settings_.array_size.value_or(kDefaultArraySize)) / 10);
   if (unsent_.size() >= batch) return true;
   const auto waiting = static_cast<long>(tasks_.size()) - running_now_;
   if (waiting < 2L * slots_ + 8) return true;
@@ -158,7 +159,7 @@ bool SlurmExecutor::submit_due() const {
 void SlurmExecutor::submit_unsent() {
   // Group by shape, keeping the claim order inside each group.
   std::vector<std::pair<SlurmArray, std::vector<JobLaunch>>> groups;
-  const auto max_size = static_cast<std::size_t>(settings_.array_size.value_or(1000));
+  const auto max_size = static_cast<std::size_t>(settings_.array_size.value_or(kDefaultArraySize));
   for (const auto& job : unsent_) {
     const SlurmArray s = shape_of(job);
     auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) {

@@ -247,6 +247,14 @@ fs::path fake_slurm(const fs::path& dir) {
   return bin;
 }
 
+// The fake sbatch's calls, one line of arguments each.
+std::vector<std::string> sbatch_calls(const fs::path& dir) {
+  std::ifstream in(dir / "sbatch_args");
+  std::vector<std::string> out;
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
 TEST(SlurmExecutor, SubmitsAnArrayAndReadsTheExitCodes) {
   const auto dir = temp_dir("slurm");
   const auto bin = fake_slurm(dir);
@@ -299,12 +307,6 @@ TEST(SlurmExecutor, TheStopLeadGrowsWithTheEarlierAttemptsIterationTime) {
   const std::string old_path = std::getenv("PATH");
   setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
   std::ofstream(dir / "mode") << "hold";
-  auto lines = [&] {
-    std::ifstream in(dir / "sbatch_args");
-    std::vector<std::string> out;
-    for (std::string l; std::getline(in, l);) out.push_back(l);
-    return out;
-  };
   for (const double limit_minutes : {60.0, 6.0}) {
     fs::remove(dir / "sbatch_args");
     SlurmSettings settings;
@@ -317,7 +319,7 @@ TEST(SlurmExecutor, TheStopLeadGrowsWithTheEarlierAttemptsIterationTime) {
     ex.start(fresh);
     ex.start(resumed);
     ex.flush();
-    const auto args = lines();
+    const auto args = sbatch_calls(dir);
     ASSERT_EQ(args.size(), 2u);  // two arrays: the leads differ
     EXPECT_NE(args[0].find("--signal=B:TERM@120 "), std::string::npos) << args[0];
     const std::string lead = limit_minutes == 60.0 ? "480" : "180";
@@ -404,12 +406,7 @@ TEST(SlurmExecutor, RefillsAreGatheredWhileTheQueueHoldsEnoughWaitingTasks) {
   const std::string old_path = std::getenv("PATH");
   setenv("PATH", (bin.string() + ":" + old_path).c_str(), 1);
   std::ofstream(dir / "mode") << "hold";
-  auto submissions = [&] {
-    std::ifstream in(dir / "sbatch_args");
-    std::size_t n = 0;
-    for (std::string l; std::getline(in, l);) ++n;
-    return n;
-  };
+  auto submissions = [&] { return sbatch_calls(dir).size(); };
   SlurmSettings settings;
   settings.poll_s = 3600;  // one poll, at the first wait
   SlurmExecutor ex(kFakeWorker, dir / "runs", settings, 2);
