@@ -43,7 +43,10 @@ Database::Database(const std::filesystem::path& file, bool create, int busy_time
   exec("PRAGMA foreign_keys = ON");
 }
 
-Database::~Database() { sqlite3_close(db_); }
+Database::~Database() {
+  statements_.clear();
+  sqlite3_close(db_);
+}
 
 void Database::exec(std::string_view sql) {
   char* err = nullptr;
@@ -57,14 +60,27 @@ void Database::exec(std::string_view sql) {
   }
 }
 
-Statement Database::prepare(std::string_view sql) { return Statement(db_, sql); }
+Statement Database::prepare(std::string_view sql) { return Statement(db_, statements_, sql); }
 
-Statement::Statement(sqlite3* db, std::string_view sql) : db_(db) {
+Statement::Statement(sqlite3* db, StatementCache& cache, std::string_view sql) : db_(db), cache_(&cache) {
+  const StatementCache::Taken taken = cache.take(sql);
+  key_ = taken.key;
+  st_ = taken.statement;
+  if (st_ != nullptr) return;
   const int rc = sqlite3_prepare_v2(db, sql.data(), static_cast<int>(sql.size()), &st_, nullptr);
-  if (rc != SQLITE_OK) fail(db, rc, "prepare '" + std::string(sql.substr(0, 80)) + "'");
+  if (rc != SQLITE_OK) {
+    sqlite3_finalize(st_);
+    fail(db, rc, "prepare '" + std::string(sql.substr(0, 80)) + "'");
+  }
 }
 
-Statement::~Statement() { sqlite3_finalize(st_); }
+Statement::~Statement() {
+  if (st_ == nullptr) return;
+  if (key_ != nullptr)
+    cache_->give(key_, st_);
+  else
+    sqlite3_finalize(st_);
+}
 
 Statement& Statement::bind(int i, long long v) {
   if (const int rc = sqlite3_bind_int64(st_, i, v); rc != SQLITE_OK) fail(db_, rc, "bind");

@@ -1,6 +1,7 @@
 // Thin RAII wrappers over the sqlite3 C API: a connection, a prepared
 // statement, and a transaction that rolls back unless committed.
-// Every failure throws SqliteError with SQLite's message.
+// Every failure throws SqliteError with SQLite's message. A connection keeps
+// its prepared statements for reuse (store/statement_cache.h).
 #pragma once
 
 #include <sqlite3.h>
@@ -14,6 +15,7 @@
 #include <memory>
 
 #include "store/busy_wait.h"
+#include "store/statement_cache.h"
 
 namespace gridfree {
 
@@ -43,17 +45,21 @@ class Database {
   long long last_insert_rowid() const { return sqlite3_last_insert_rowid(db_); }
   int changes() const { return sqlite3_changes(db_); }
   sqlite3* handle() { return db_; }
+  const StatementCache& statements() const { return statements_; }
 
  private:
   sqlite3* db_ = nullptr;
   std::unique_ptr<BusyWait> busy_;
+  StatementCache statements_;
 };
 
 class Statement {
  public:
-  Statement(sqlite3* db, std::string_view sql);
+  // Takes an idle handle for sql from cache (or prepares one) and gives it
+  // back when it ends.
+  Statement(sqlite3* db, StatementCache& cache, std::string_view sql);
   ~Statement();
-  Statement(Statement&& o) noexcept : db_(o.db_), st_(o.st_) { o.st_ = nullptr; }
+  Statement(Statement&& o) noexcept : db_(o.db_), st_(o.st_), cache_(o.cache_), key_(o.key_) { o.st_ = nullptr; }
   Statement(const Statement&) = delete;
   Statement& operator=(const Statement&) = delete;
   Statement& operator=(Statement&&) = delete;
@@ -89,6 +95,8 @@ class Statement {
  private:
   sqlite3* db_;
   sqlite3_stmt* st_ = nullptr;
+  StatementCache* cache_;
+  const std::string* key_ = nullptr;  // nullptr: not kept, finalized at the end
 };
 
 // BEGIN IMMEDIATE (takes the write lock at once) ... COMMIT; rolls back in
