@@ -190,8 +190,14 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
   };
   HeadReservation reservation;
   ProgressTally tally = progress_tally(store, o);
+  // A poll's queue changes in one commit, not one each: a poll moves up to
+  // max_queued tasks (BENCHMARKS.md "Prepared statements kept").
   auto record_updates = [&] {
-    for (const auto& u : executor.take_updates()) store.set_queue_state(u.job_id, u.external_id, u.state, u.reason);
+    const std::vector<JobUpdate> updates = executor.take_updates();
+    if (updates.empty()) return;
+    Transaction tx(store.db());
+    for (const auto& u : updates) store.set_queue_state(u.job_id, u.external_id, u.state, u.reason);
+    tx.commit();
   };
 
   // Reports of studies whose series finished, paced (sched/report_pacer.h):
