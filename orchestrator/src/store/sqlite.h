@@ -95,7 +95,7 @@ class Statement {
  private:
   sqlite3* db_;
   sqlite3_stmt* st_ = nullptr;
-  StatementCache* cache_;
+  StatementCache* cache_ = nullptr;
   const std::string* key_ = nullptr;  // nullptr: not kept, finalized at the end
 };
 

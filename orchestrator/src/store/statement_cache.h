@@ -2,7 +2,7 @@
 // text. A Statement takes an idle handle for its text (or prepares one) and
 // gives it back, reset and with its bindings cleared, when it ends; so a
 // statement run once per job is compiled once per connection, not once per
-// job (docs/BENCHMARKS.md "The Slurm executor at ensemble scale").
+// job (docs/BENCHMARKS.md "Prepared statements kept").
 // At most max_texts distinct texts are kept: statements of other texts are
 // finalized when they end, so SQL built at run time cannot grow the cache
 // without bound. Several handles of one text may be idle at once (a text in
