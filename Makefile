@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Convenience wrapper around CMake/CTest. Plain CMake works too:
 #   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build
 BUILD     ?= build

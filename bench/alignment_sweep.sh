@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Vertical-alignment sweep of the bursting-bubble baseline (PC1, superbee,
 # bvk, fwhm 6): for each base grid, n_y is changed by the given offsets so
 # that the bed surface (y* = 28) moves through one cell, and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Shared by the transfer benchmarks (source it): the bursting-bubble
 # baseline job (PC1, superbee, bvk) on one grid with a given
 # numerics.deposition object, and the machine line every benchmark prints.

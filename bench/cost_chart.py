@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """CPU time per cell against cells, one line per benchmark table.
 
     bench/cost_chart.py OUT.svg "LABEL=FILE.csv" ...

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A bed settled under gravity by LAMMPS, the held-out comparison for
 # gridfree's random emulsion (docs/PARTICLES.md "Held-out check: a
 # DEM-settled bed"). Needs LAMMPS with the GRANULAR package (Debian:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Linear-solver scaling benchmark: iterations and time against the number of
 // unknowns for the symmetric solver (CG + aggregation multigrid vs CG +
 // Jacobi) on two pressure-correction-like problems, and for BiCGSTAB on a

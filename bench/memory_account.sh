@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Where the worker's bytes go: the bursting-bubble baseline job on one grid
 # under valgrind's massif, printed as the heap at its peak by allocation
 # site (the function that allocated, with its caller), in bytes per cell.

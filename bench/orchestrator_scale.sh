@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The orchestrator's own cost per job as studies grow: `gridfree run` of a
 # study of K cases × 6 drag laws × the paper's 18 grids (108·K jobs) with a
 # worker that answers at once (through GRIDFREE_WORKER), so what is

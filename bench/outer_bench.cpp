@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Outer-iteration variants of one job, for choosing by measurement
 // (docs/DESIGN.md, "Outer convergence"): the start (nested or analytic),
 // Anderson acceleration depth, Newton–Krylov (GMRES restart length), the

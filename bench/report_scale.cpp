@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Report writing at ensemble scale: time, memory and page sizes of
 // `write_study_report` for a synthetic study of S series × 18 grids, with
 // the library extrapolator the orchestrator uses and no PDF/PNG export (the

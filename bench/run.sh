@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Worker benchmark: the bursting-bubble baseline (PC1, superbee, bvk, fwhm 6)
 # on Δ* = 1, 0.5 and 0.25, and the SSCP-like bed (walls in x and z,
 # Re_p ≈ 500) on Δ* = 4.7 and 2.3: wall and CPU time, iterations, peak RSS,

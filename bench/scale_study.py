@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The benchmark study of K cases x 6 drag laws x the paper's 18 grids
 (108*K jobs) on stdout, from the quickstart study's case PC1:
 

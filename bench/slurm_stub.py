@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A stand-in for sbatch, squeue, scancel and sacct that runs array tasks
 on this machine at once, without a controller: the Slurm executor's own
 cost measured apart from Slurm's (bench/orchestrator_scale.sh,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Throughput and added latency of the Slurm executor: the paper's 216-job
 # study (studies/bursting_bubble_paper.json) solved by the fake worker
 # (tests/fixtures/fake_worker.sh, every job converges at once, or after

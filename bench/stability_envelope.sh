@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The solver's robustness envelope (docs/SOLVER.md "Robustness envelope"):
 # runs studies/stability.json (120 series, 540 distinct jobs on six grids
 # Δ* 3.3 → 0.7; about 100 s of CPU, 9–16 min of wall time on 2 shared

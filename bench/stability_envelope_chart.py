@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The solver's robustness envelope as a chart: outer iterations and outcome
 over Δ*, one panel per bed, one line per Re_p.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Checks every converged value of the held-out stability scenes against
 independent estimates (docs/SOLVER.md "Held-out scenes").
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # How promptly `gridfree run` stops, at random moments of a large study, and
 # what a stop costs: SIGINT at a random time after each (re)start, the time
 # from the signal to the process's exit, the exit code, temporary files left

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A series of eight grids Δ* ≈ 3.3 → 0.5 of the bursting-bubble baseline
 # (PC1, superbee, bvk, fwhm 6) whose n_y are NOT chosen to put the bed
 # surface (y* = 28) on a cell face, for one transfer (docs/TRANSFER.md).

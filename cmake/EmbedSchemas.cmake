@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Embeds schemas/*.schema.json into the binaries, so the installed tools need no source tree.
 file(GLOB GRIDFREE_SCHEMA_FILES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/schemas/*.schema.json)
 set(GRIDFREE_SCHEMA_ENTRIES "")

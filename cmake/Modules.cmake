@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # gridfree_module(NAME [DEPS module...] [LIBS target...] [SOURCES extra...])
 # A module is a folder src/NAME of the calling directory, built as the static
 # library gf_NAME. DEPS are other modules (lower layers only), LIBS external

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Records the source revision in the binaries (falls back to "unknown" outside git).
 execute_process(
   COMMAND git rev-parse --short=10 HEAD

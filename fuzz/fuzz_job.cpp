@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the job reader (job/job_spec.h: limits, schema, semantic and
 // plausibility checks): any bytes give a JobSpec or an InputError.
 #include <cstddef>

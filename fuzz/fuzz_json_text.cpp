@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the JSON text limits and the schema validator (core/json_limits.h,
 // core/schema_validation.h): any bytes either fail with an InputError or
 // parse, and any parsed document validates against every shipped schema

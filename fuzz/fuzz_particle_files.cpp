@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the particle file readers (particles/particle_io.h): the first byte
 // picks CSV or MFiX, the rest is the file's content (written to a scratch
 // file, as the readers take paths); then the configuration is checked

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the reader of result files read back (job/result.h): any bytes
 // give a JobResult or an InputError.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the series readers of `gridfree extrapolate` (extrap/series_io.h):
 // the first byte picks JSON or CSV, the rest is the text.
 #include <cstddef>

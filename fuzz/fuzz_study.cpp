@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the study reader (study/study.h): any bytes give a Study or an
 // InputError (grids, cases, factors and designs included).
 #include <cstddef>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian packages gridfree needs to build, test and report:
 #   scripts/install-deps.sh        build and run (what `make demo` needs)
 #   scripts/install-deps.sh test   also what the tests use (`make test`)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Statistics and a picture of particle configurations (CSV x,y,z,d in cm).
 
     scripts/particle_profile.py --domain LX LY LZ --out FIG.svg A.csv [B.csv ...]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The studies behind docs/EXTRAPOLATION.md "Coverage", written from the
 # shipped bursting-bubble paper study into OUT_DIR:
 #   in_sample.json       its 12 series on the 11 coarsest grids (Δ* 3.3 → 0.556)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Coverage of f1 ± U1 and of f0 ± k|f0 − f1| + σ (k = 1, 1.25, Fs) per
 # method and per each window's own verdict, as in docs/EXTRAPOLATION.md
 # "Coverage": every run of 4..8 consecutive grids among a series' NCOARSE

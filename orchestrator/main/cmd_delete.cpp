@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree delete STUDY [--db F]: removes a study, its series, their
 // extrapolations and uncertainties, its job links and events, then every job
 // (and result, and run folder) that no other study uses. Jobs shared with

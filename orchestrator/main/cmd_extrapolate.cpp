@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree extrapolate SERIES.json|SERIES.csv [--method capped|fm|eh14] [--p-range lo hi] [--self-check]
 //
 // Applies the extrapolation of PHYSICS.md §8 to any series a user brings

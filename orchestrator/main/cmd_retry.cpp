@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree retry STUDY: puts a study's failed jobs back in the queue (attempts
 // reset, their series and the study open again); `run` or a daemon then
 // works them. Results of converged jobs are kept.

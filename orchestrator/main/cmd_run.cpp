@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree run | submit | daemon: put a study in the database and work the queue.
 //   --replace (run, submit): a changed study under a stored name replaces it
 //   run     = validate + submit + schedule that study until done + report

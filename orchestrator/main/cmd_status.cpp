@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree status [STUDY] [--json] (with STUDY: series, running jobs, ETA) | report STUDY [--out DIR] | cancel STUDY
 #include <algorithm>
 #include <iostream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree validate|plan|run|submit|daemon|status|report|cancel: registration
 // and the helpers they share (database, executor, scheduler options).
 #include "cmd_study.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers shared by the study subcommands (validate, plan, run, submit,
 // daemon, status, report, cancel) and their registration functions.
 #pragma once

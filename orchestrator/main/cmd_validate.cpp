@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree validate STUDY  and  gridfree plan STUDY [--json] [-j N]
 // [--target-rde X] [--db FILE]: read-only; nothing is written anywhere.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // --executor and Slurm flags (see executor_flags.h).
 #include "executor_flags.h"
 

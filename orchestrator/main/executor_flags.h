@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // --executor and the Slurm settings flags shared by `run` and `daemon`
 // (docs/ORCHESTRATOR.md, "Slurm settings"): profile file < flags.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree: studies -> jobs -> worker pool -> SQLite -> reports (docs/INTERFACE.md §3-§5).
 // main parses, runs one subcommand, and maps the outcome to an exit code.
 #include <algorithm>

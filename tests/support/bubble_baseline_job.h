@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bursting-bubble baseline (PC1: 30 × 200 × 10 d, d = 0.01 cm,
 // periodic x and z, U0 = 20 cm/s, generator bursting_bubble seed 1,
 // probes at y* = 4 and 104; superbee, BVK, the default transfer with

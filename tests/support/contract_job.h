@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The job of docs/INTERFACE.md §2 (the paper's PC1 baseline), for the job tests.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A closeness check relative to the size of the expected value.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The gridfree executable run in a folder with the fake worker
 // (tests/fixtures/fake_worker.sh) as GRIDFREE_WORKER, for the CLI tests.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether Debian's OpenFOAM is installed (its solvers on PATH and
 // /usr/share/openfoam, the WM_PROJECT_DIR they need): the OpenFOAM tests
 // assert it, so a machine without it fails them instead of skipping

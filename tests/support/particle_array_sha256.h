@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The SHA-256 of a particle array (x, y, z, d as little-endian doubles, in
 // output order): what the generated-bed pins compare.
 #pragma once

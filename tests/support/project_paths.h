@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the tests find the project: its source tree, the built gridfree
 // executable and the fake worker (from GRIDFREE_SOURCE_DIR and
 // GRIDFREE_BIN_DIR, which every test is compiled with).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Studies made from studies/quickstart.json, the base of most test studies.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs a shell command or one of the project's executables for the CLI
 // tests: exit code, stdout, stderr.
 #pragma once

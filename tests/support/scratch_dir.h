@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scratch folders for tests that write files: <temp>/gridfree_<tag>_<pid>/<name>.
 // Each call empties and recreates its folder; the program's whole
 // <temp>/gridfree_<tag>_<pid> is removed when the test program exits, so a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bed of the sscp_like generator tests: 16 × 40 × 8 d of d = 0.3256 cm,
 // walls in x and z, mass inflow of 219 cm/s at the bottom and a pressure
 // outflow at the top (the SSCP case's particles and gas velocity, on a small

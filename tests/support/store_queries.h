@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One-value queries and result rows for the store tests.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Study documents parsed as files of studies/ for the study tests: the
 // study, or the problems it is refused with.
 #pragma once

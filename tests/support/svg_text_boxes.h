@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Estimated boxes of an SVG's <text> elements, for the report's layout
 // tests: "does every text lie inside the viewBox", "do two labels overlap".
 // Width ≈ 0.6 × font-size per character (DejaVu Sans averages 0.6–0.64 em;

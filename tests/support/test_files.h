@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whole files for the tests that write their inputs and read outputs: JSON
 // documents and raw contents.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grids for the solver tests from their cell counts and box (without a
 // case, unlike make_grid of job/case_grid.h).
 #pragma once

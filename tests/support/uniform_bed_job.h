@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A continuum bed (PHYSICS.md §6 "uniform bed") for the solver tests:
 // 10 × 120 × 10 d with d = 0.01 cm, periodic x and z, mass inflow U0 at
 // y = 0, pressure outflow at the top, ε_s = φ everywhere, probes at y* = 20

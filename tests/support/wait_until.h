@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Polling for a condition that another process makes true.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker align JOB.json [--cells-y-offsets 0,1,...] [--cells-x-offsets ...]
 //     [--cells-z-offsets ...] [--shift-fractions 0,0.25,...] [--shift-axis x|y|z]
 //     [-o OUT.json] [--threads N] [-q]

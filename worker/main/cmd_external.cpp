@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker solve JOB.json -o RESULT.json   (a job with /case/external)
 // gridfree-worker collect JOB.json -o RESULT.json [--run-dir DIR]
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker particles SPEC.json [-o FILE.csv] [--stats | --stats-json]
 //
 // Generates a seeded configuration or converts a particle file (e.g. MFiX

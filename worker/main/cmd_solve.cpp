@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker solve JOB.json [-o RESULT.json] [--threads N] [--start nested|analytic]
 //                       [--vtk DIR] [--max-memory SIZE] [--progress FILE]
 //                       [--checkpoint FILE] [--resume FILE] [--bed-cache DIR] [-v|-q]

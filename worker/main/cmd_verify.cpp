@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker verify [--json] [--quick] [--scheme NAME]... [--threads N]
 // Code verification with manufactured solutions: observed vs expected order
 // of accuracy for every convection scheme and for the filter; the grids of

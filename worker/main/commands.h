@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Subcommands of gridfree-worker. Each add_*_command registers itself on the
 // app and, when selected, stores its exit code in `exit_code`.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker: solves one frozen-bed case on one grid (docs/INTERFACE.md §2).
 // main parses, runs one subcommand, and maps the outcome to an exit code.
 #include <algorithm>

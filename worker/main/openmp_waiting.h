@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // OpenMP threads that wait without stealing a shared core.
 //
 // By default libgomp lets an idle thread spin for a long time at every

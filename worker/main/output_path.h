@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checks an output file path before any work is done, so a typo in -o costs
 // an exit 2 naming the path and the reason instead of a finished solve lost
 // at the end (docs/INTERFACE.md §2).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The worker's stop flag (stop_request.h).
 #include "stop_request.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SIGTERM / SIGINT to the worker: a request to stop after the current outer
 // iteration (and write a checkpoint when asked to; docs/INTERFACE.md §2).
 // The handler only sets a flag — the one piece of process-wide state, as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How many OpenMP threads a worker command uses: `--threads N` when given;
 // otherwise OMP_NUM_THREADS when set (libgomp has read it already);
 // otherwise every core.

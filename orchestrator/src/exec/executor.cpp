@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared executor helpers: run directories, the worker command line, exit descriptions.
 #include "exec/executor.h"
 

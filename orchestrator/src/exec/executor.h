@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seam between the scheduler and wherever jobs run (ninja's
 // CommandRunner): start a job, wait for any one to finish, kill them all.
 // Implementations: LocalExecutor (child processes), SlurmExecutor (sbatch),

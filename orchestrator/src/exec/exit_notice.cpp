@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // pidfd exit notices (see exit_notice.h).
 #include "exec/exit_notice.h"
 

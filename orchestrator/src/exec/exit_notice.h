@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Waiting for a child's exit without polling on a timer: a pidfd per child
 // (Linux ≥ 5.3) becomes readable when the child terminates, so the
 // scheduler's wait wakes as soon as a worker ends instead of at its next

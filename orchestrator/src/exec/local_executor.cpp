@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // LocalExecutor: posix_spawn + process groups + waitpid polling (see local_executor.h).
 #include "exec/local_executor.h"
 

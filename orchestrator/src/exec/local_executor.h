@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs workers as child processes on this machine. Each worker gets its own
 // process group (so a timeout or shutdown kills it and anything it started,
 // and a terminal's Ctrl-C reaches only the orchestrator), stdin from

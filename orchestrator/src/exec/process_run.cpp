@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // run_process (see process_run.h): posix_spawnp with two pipes, drained with
 // poll() so that neither pipe can fill up and block the child.
 #include "exec/process_run.h"

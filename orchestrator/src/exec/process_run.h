@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs a command (argv, no shell) to completion and captures its stdout and
 // stderr separately: the Slurm client commands are judged by both (sbatch
 // prints the job id on stdout and its reasons for refusing on stderr).

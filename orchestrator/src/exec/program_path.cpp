@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Programs on a PATH value (see program_path.h).
 #include "exec/program_path.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Finding programs on a PATH value (given, not read from the environment,
 // so that tests pass their own): the Slurm executor checks its commands up
 // front, before the database is touched (docs/ORCHESTRATOR.md "Slurm").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SlurmExecutor (see slurm_executor.h).
 #include "exec/slurm_executor.h"
 

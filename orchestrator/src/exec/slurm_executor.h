@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs jobs as Slurm array tasks (docs/ORCHESTRATOR.md, "Slurm"):
 //
 //   start()   gathers jobs; flush() groups them by size (cpus, time and

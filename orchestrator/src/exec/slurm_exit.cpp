@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exit of a Slurm task that left the queue (see slurm_exit.h).
 #include "exec/slurm_exit.h"
 

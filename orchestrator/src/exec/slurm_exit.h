@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How a Slurm task that has left the queue ended, from what is left of it,
 // in this order (docs/ORCHESTRATOR.md, "Watching"):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slurm fault classification (see slurm_faults.h). The phrases are Slurm
 // 22.05's error strings (slurm_strerror) as sbatch and squeue print them.
 #include "exec/slurm_faults.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a Slurm failure means for the job (docs/ORCHESTRATOR.md, "Slurm
 // faults"). Pure functions of what Slurm said, so the rules are testable
 // without a cluster:

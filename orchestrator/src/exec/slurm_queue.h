@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One batched look at the queue: `squeue --me -h -o %i|%T|%r|%M` lists
 // every job and array task of this user that has started, one line each,
 // and the pending tasks of an array on one line, their indices in brackets:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slurm array scripts and sbatch command lines (see slurm_script.h).
 #include "exec/slurm_script.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The batch script and sbatch command line of a Slurm job array: task i
 // runs the worker (the same command as LocalExecutor, docs/INTERFACE.md) in
 // the i-th run folder, after the profile's setup lines, and saves its exit

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slurm settings: profile reading, merging, validation (see slurm_settings.h).
 #include "exec/slurm_settings.h"
 

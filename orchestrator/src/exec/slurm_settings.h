@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cluster settings of the Slurm executor (docs/ORCHESTRATOR.md, "Slurm
 // settings"): read from a profile file (JSON), then overridden field by field
 // by the study's "slurm" block and command-line flags (profile < study <

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the worker executable is: beside the orchestrator's own executable.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading the worker's progress file and the stop grace derived from it (see worker_progress.h).
 #include "exec/worker_progress.h"
 

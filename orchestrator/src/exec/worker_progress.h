@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The worker's progress file, <run folder>/progress.json (written by
 // `gridfree-worker solve --progress`, docs/INTERFACE.md §2), and the one
 // decision the executors take from it: how long a worker asked to stop may

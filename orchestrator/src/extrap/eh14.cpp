@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Eça & Hoekstra (2014) uncertainty procedure, Appendix A (see eh14.h).
 #include "extrap/eh14.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Eça & Hoekstra, "A procedure for the estimation of the numerical uncertainty
 // of CFD calculations based on grid refinement studies", J. Comput. Phys. 262
 // (2014) 104–130 [EH14], Appendix A, as implemented here:

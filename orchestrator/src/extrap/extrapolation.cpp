@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Top-level extrapolation of one series (see extrapolation.h).
 #include "extrap/extrapolation.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Extrapolation of one grid-convergence series to h → 0 with an uncertainty
 // for every grid (PHYSICS.md §8), plus the classic three-grid GCI for every
 // consecutive triplet for contrast [Celik et al. 2008]. The API the study

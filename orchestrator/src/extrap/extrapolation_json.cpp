@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JSON form of an ExtrapolationResult, docs/INTERFACE.md §4 (see extrapolation.h).
 // Empty optionals and non-finite numbers become null.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fullmer & Musser (2018) procedure, PHYSICS.md §8 (see fm_uncertainty.h).
 #include "extrap/fm_uncertainty.h"
 

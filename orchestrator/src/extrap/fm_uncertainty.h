@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fullmer & Musser (2018) extrapolation and uncertainty, PHYSICS.md §8, the
 // default procedure. With weights w_i = (1/h_i)/Σ(1/h_j):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Celik et al. (2008) three-grid GCI for each consecutive triplet (see gci.h).
 #include "extrap/gci.h"
 

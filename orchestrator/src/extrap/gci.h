@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Three-grid Richardson extrapolation and Grid Convergence Index, Celik et al.,
 // ASME J. Fluids Eng. 130 (2008) 078001 [C08], for grids h1 < h2 < h3
 // (1 = finest):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid-design warnings (see grid_design.h).
 #include "extrap/grid_design.h"
 

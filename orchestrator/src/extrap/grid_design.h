@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Warnings about a series' grids before anything is solved (`gridfree
 // validate` and `plan`), from the verdict rules of docs/EXTRAPOLATION.md:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Weighted least squares by QR of the √w-scaled system (see least_squares.h).
 #include "extrap/least_squares.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Weighted linear least squares, the building block of every fit in extrap/.
 //
 //     minimise  S(x) = Σ_i w_i (y_i − (A x)_i)²

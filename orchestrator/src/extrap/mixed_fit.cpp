@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fixed-exponent fits f0 + Σ c_k h^{e_k} (see mixed_fit.h).
 #include "extrap/mixed_fit.h"
 

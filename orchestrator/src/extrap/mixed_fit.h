@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fits with fixed exponents, f̂(h) = f0 + Σ_k c_k h^{e_k}, weighted least squares:
 //
 //     mixed          f0 + c1 h + c2 h²     (PHYSICS.md §8; EH14 eq. 6, "δ_12")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Global profile least squares for f0 + c h^p (see power_fit.h).
 #include "extrap/power_fit.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Power-law fit f̂(h) = f0 + c h^p with the order p a free parameter
 // (PHYSICS.md §8; EH14 eq. 3, "δ_RE", and eqs. 8-11 for the weighted fit).
 //

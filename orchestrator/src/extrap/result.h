@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Options and result of extrapolating one series (PHYSICS.md §8, docs/INTERFACE.md §4).
 // Numbers that cannot be computed are empty optionals (JSON null).
 #pragma once

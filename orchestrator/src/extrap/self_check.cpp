@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Coverage self-check (see self_check.h).
 #include "extrap/self_check.h"
 

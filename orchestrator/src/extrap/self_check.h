@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Coverage self-check (docs/EXTRAPOLATION.md "Coverage self-check"): does
 // the uncertainty a procedure prints cover the answer the same procedure
 // gives once more grids are added? Measured on the user's own series.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Validation and sorting of a grid-convergence series; fit weights; data range.
 #include "extrap/series.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A grid-convergence series: pairs (h_i, f_i) of a representative cell size
 // h (Δ* in this project) and the quantity of interest f on that grid.
 //

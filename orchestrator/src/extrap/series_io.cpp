@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JSON and CSV readers for a grid-convergence series.
 #include "extrap/series_io.h"
 

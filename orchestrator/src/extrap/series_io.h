@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a series from the files users bring (docs/INTERFACE.md §4, `gridfree
 // extrapolate`): JSON {"h": [...], "f": [...]} or CSV with a header row
 // naming the columns h and f (other columns are ignored, '#' starts a comment

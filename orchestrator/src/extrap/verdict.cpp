@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Verdict rules of docs/EXTRAPOLATION.md "Verdicts" (see verdict.h).
 #include "extrap/verdict.h"
 

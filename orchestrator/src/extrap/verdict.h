@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One verdict per series, a pure function of the extrapolation's numbers
 // (docs/EXTRAPOLATION.md "Verdicts", docs/PHYSICS.md §8). With n converged
 // grids, f0 the extrapolated value, R_f = (max f − min f)/(n − 1), σ_RE/R_f the

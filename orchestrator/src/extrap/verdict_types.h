@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The verdict of one series and the numbers its rules looked at
 // (docs/EXTRAPOLATION.md "Verdicts"; computed by judge() in verdict.h).
 #pragma once

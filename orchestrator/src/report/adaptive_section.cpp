@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The "Adaptive grids" report section (report/adaptive_section.h).
 #include "report/adaptive_section.h"
 

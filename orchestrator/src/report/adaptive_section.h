@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's "Adaptive grids" section: every decision of the study's
 // adaptive series (sched/adaptive_series.h) in order, as written to the
 // events table — why each grid was added and where and why each series

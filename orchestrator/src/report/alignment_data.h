@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alignment check of a study as the report receives it (report_data.h):
 // for one series and one of its grids, dp* of the grid and of each of its
 // re-aligned variants (docs/TRANSFER.md "Alignment check").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Atomic file writing: temp file + rename (see atomic_file.h).
 #include "report/atomic_file.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writes a file atomically: the content goes to a temporary file in the same
 // folder, which is then renamed over the target, so a reader never sees a
 // half-written report (rename within one file system is atomic on POSIX).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bed-structure "About this case" section (see bed_about.h).
 #include "report/bed_about.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "About this case: bed structure" (docs/REPORTS.md): one line per case, or
 // per ensemble with the range over its instances, from the "bed" summary of
 // the case's results (docs/INTERFACE.md §2, store/store_beds.h), with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tick generation and value→pixel mapping (see chart_axis.h).
 #include "report/chart_axis.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Axis ranges and tick values for the SVG charts.
 //
 // Linear axes: ticks at "nice" steps s = m·10^k, m ∈ {1, 2, 5}, the step

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared chart pieces (see chart_common.h).
 #include "report/chart_common.h"
 

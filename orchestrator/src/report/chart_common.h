@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pieces shared by the report's chart builders (chart_series.cpp,
 // chart_rde.cpp, chart_gci.cpp, chart_pareto.cpp).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chart export through rsvg-convert (see chart_export.h). The converter is
 // spawned directly (no shell), its output goes to a temporary file that is
 // renamed into place, so a reader never sees half a PDF.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PDF and PNG copies of the report's SVG charts, made with rsvg-convert
 // (Debian librsvg2-bin). Optional: without it the report says so and keeps
 // the SVGs only (docs/REPORTS.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Three-grid GCI bands and φ_ext beside the regression (see chart_gci.h).
 //
 // The GCI band of a triplet is C08's error band on its fine-grid value:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gci_NN_<series>.svg: the classic three-grid extrapolation (Celik et al.
 // 2008, orchestrator/src/extrap/gci.h) of every consecutive triplet beside
 // the regression's f_i ± U_i and f0. For each triplet, at its finest grid

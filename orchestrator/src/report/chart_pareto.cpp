@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pareto front of cost against a-priori RDE (see chart_pareto.h).
 #include "report/chart_pareto.h"
 

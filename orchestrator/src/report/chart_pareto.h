@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // speed_accuracy.svg and speed_accuracy_work.svg: what a target accuracy
 // costs. Per series, every converged grid as (a-priori RDE = U_i/|f0| of
 // docs/PHYSICS.md §8, cost), the cost being its CPU time (this machine) or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RDE vs Δ* of every series (see chart_rde.h).
 #include "report/chart_rde.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fig2_rde.svg (FM18 Fig. 2): RDE_i = U_i/|f0| in percent against Δ* for
 // every grid of every series with an uncertainty (docs/PHYSICS.md §8). Both
 // axes follow the report's axis rule: log when the data span more than a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RDE bands per factor level (see chart_rde_bands.h).
 #include "report/chart_rde_bands.h"
 

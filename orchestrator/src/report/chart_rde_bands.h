@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fig2_rde_<factor>.svg, the RDE chart of a study too large for one line
 // per series (report_layout.h): per level of one factor, at every Δ* the
 // median RDE over the level's series that have an RDE there (solid line with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // DP* vs Δ* of one series (see chart_series.h).
 #include "report/chart_series.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fig1_NN_<series>.svg (FM18 Fig. 1): DP* vs Δ* for one series with the
 // power-law (f0 + c h^p) and mixed-order (f0 + c1 h + c2 h²) fits of
 // docs/PHYSICS.md §8, f0 ± U as a dashed line and U as error bars, every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Target RDE → cheapest grid → its cost (see cost_table.h).
 #include "report/cost_table.h"
 

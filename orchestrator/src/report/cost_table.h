@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "What does a target cost": for every series and target RDE, the cheapest
 // converged grid whose RDE (docs/PHYSICS.md §8, a-priori from the series'
 // extrapolation) meets the target together with the RDE of every finer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One-factor pairs of series and their relative differences (see differences.h).
 #include "report/differences.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Relative differences of the extrapolated values between series that
 // differ in exactly one factor (case, convection, fwhm_dp, drag,
 // deposition) — how FM18 compares drag laws, filter widths and particle

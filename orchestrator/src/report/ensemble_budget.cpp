@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Uncertainty budget of an ensemble (see ensemble_budget.h).
 #include "report/ensemble_budget.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The uncertainty budget of an ensemble (docs/EXTRAPOLATION.md "Ensembles"),
 // FM18's Fig. 3 comparison: at each Δ* of a configuration C, three relative
 // magnitudes side by side —

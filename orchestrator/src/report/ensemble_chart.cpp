@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The budget chart of one ensemble (see report_ensembles.h): x = Δ*, y = %.
 //   one curve per configuration: ensemble-mean RDE, error bars = its sample sd
 //   dashed lines: each configuration's instance spread (its colour) and each

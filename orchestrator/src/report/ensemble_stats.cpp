@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ensemble statistics (see ensemble_stats.h).
 #include "report/ensemble_stats.h"
 

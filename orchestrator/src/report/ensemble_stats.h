@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ensemble statistics of the report (docs/EXTRAPOLATION.md "Ensembles"):
 // for every ensemble and configuration (convection × fwhm_dp × drag ×
 // deposition), the instances' f0 and, per Δ*, their U and RDE = U/|f0|.

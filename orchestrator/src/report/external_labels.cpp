@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Report labels of external series (report/external_labels.h).
 #include "report/external_labels.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How reports name an external case's quantity and its h (docs/EXTERNAL.md
 // "The study"), from the study definition: "kinetic_energy: mean kinetic
 // energy [m^2/s^2]" instead of DP*, "h = 1 / N" instead of Δ*.

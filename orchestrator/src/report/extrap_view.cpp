@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reads the contract's extrapolation JSON into an ExtrapolationView.
 #include "report/extrap_view.h"
 

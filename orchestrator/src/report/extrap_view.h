@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's view of one series' extrapolation, read from the JSON form
 // of the extrapolation result (docs/INTERFACE.md §4, `gridfree extrapolate`):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Extrapolations remembered between report writes (see extrapolation_memo.h).
 #include "report/extrapolation_memo.h"
 

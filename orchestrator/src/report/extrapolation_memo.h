@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Extrapolations remembered between report writes.
 //
 // While series finish, the scheduler rewrites a study's report every few

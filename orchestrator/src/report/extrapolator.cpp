@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // library_extrapolator: calls the extrapolation library (extrap/) and returns
 // its contract JSON. This is the only report file that includes extrap/
 // headers, so the rest of the report depends on the JSON form alone.

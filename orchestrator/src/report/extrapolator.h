@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seam between the report and the extrapolation library: a function
 // from a series' converged grids (h = Δ*, f = dp_star) to the contract's
 // extrapolation JSON (docs/INTERFACE.md §4). The report calls the library through

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared HTML pieces of the report pages (see html_blocks.h).
 #include "report/html_blocks.h"
 

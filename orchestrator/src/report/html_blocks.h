@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pieces of HTML shared by the study page (report_html.cpp) and the series
 // pages (series_page.cpp). Text arguments are plain text: escaped here.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report pages' style sheet (see html_style.h).
 #include "report/html_style.h"
 

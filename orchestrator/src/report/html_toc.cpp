@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sections of the report page and their table of contents (see html_toc.h).
 #include "report/html_toc.h"
 

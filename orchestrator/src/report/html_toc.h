@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report page's table of contents, built from the page's own sections
 // so that it cannot drift from them: every <h2 id="…"> and <h3 id="…"> of
 // the body, in order, each h3 nested under the h2 before it. A heading

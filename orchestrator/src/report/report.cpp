@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // write_study_report: builds the report content and writes every file.
 //
 // Order: CSV tables, SVG charts, then report.md and report.html last, so a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writes reports/<study>/: report.md, a self-contained report.html, CSV
 // tables and SVG charts, from StudyReportData (no database access here).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "About this case" texts (see report_about.h).
 #include "report/report_about.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fixed "about this case" paragraphs of the report, chosen by the particle
 // generator of the study's cases (docs/REPORTS.md). Plain text; each
 // renderer escapes it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's alignment section (report_alignment.h).
 #include "report/report_alignment.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's alignment section (docs/REPORTS.md, docs/TRANSFER.md
 // "Alignment check"): per series and checked grid, the spread
 //

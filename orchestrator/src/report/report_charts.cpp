@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The list of report charts (see report_charts.h).
 #include "report/report_charts.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's charts, in display order; each chart has its own builder:
 //   fig2_rde.svg                chart_rde.h (full page)
 //   fig2_rde_<factor>.svg       chart_rde_bands.h (summary layout, report_layout.h)

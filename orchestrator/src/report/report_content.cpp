@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Assembles the ReportContent from the study data (see report_content.h).
 #include "report/report_content.h"
 

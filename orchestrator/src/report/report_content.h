@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Everything a report shows, computed once and rendered three ways
 // (Markdown, HTML, CSV + SVG files): series summaries with their
 // extrapolations, one-factor differences, tables and charts.

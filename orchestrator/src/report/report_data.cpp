@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SeriesData::label: the short name a series goes by in tables and legends.
 #include "report/report_data.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Everything a study report shows, read from the store by the orchestrator
 // and handed to the report writer (which never touches SQLite itself).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Ensembles section: tables, sentences and rendering (see report_ensembles.h).
 #include "report/report_ensembles.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's "Ensembles" section (docs/EXTRAPOLATION.md "Ensembles"):
 //   ensembles.csv     per ensemble and configuration: instances, converged
 //                     verdicts, ensemble-mean f0, sample sd, standard error,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // report.html: one self-contained page (inline CSS, inline SVG charts, no
 // external resources), with the same content as report.md. Full page: every
 // series on it, no scripts. Summary layout (report_layout.h): the study's

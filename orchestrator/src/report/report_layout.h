@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How a report is laid out for the number of series it shows
 // (docs/REPORTS.md "Large studies").
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // report.md: summary, tables, and links to the SVG charts beside it.
 #include <algorithm>
 #include <limits>

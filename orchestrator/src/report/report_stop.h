@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A stop request reaching into report writing: `gridfree run`/`daemon`/
 // `report` pass their SIGINT/SIGTERM flag as a StopRequested; the writer
 // polls it between charts and while a chart converter runs, and throws

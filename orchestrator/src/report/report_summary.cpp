@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Summary items and reading notes for the report documents.
 #include "report/report_summary.h"
 

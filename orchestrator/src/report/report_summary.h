@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The study summary and the reading notes shared by report.md and
 // report.html, as plain text (each renderer escapes it for its format).
 #pragma once

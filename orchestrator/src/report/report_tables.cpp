@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Builders of the report tables (see report_tables.h).
 #include "report/report_tables.h"
 

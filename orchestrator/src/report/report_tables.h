@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's tables, built from the series summaries:
 //   grids        one row per job (series, Δ*, cells, status, dp_star, U, RDE,
 //                iterations, wall, cpu, RSS, reason)

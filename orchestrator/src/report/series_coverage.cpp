@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Coverage self-check in the report (see series_coverage.h).
 #include "report/series_coverage.h"
 

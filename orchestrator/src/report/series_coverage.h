@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The coverage self-check of a series in the report (extrap/self_check.h,
 // docs/EXTRAPOLATION.md "Coverage self-check"): made once a series has all
 // its grids and at least 6 of them converged, through the report's

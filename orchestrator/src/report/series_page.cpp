@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One series' page (see series_page.h).
 #include "report/series_page.h"
 

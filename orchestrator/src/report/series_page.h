@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // series/<slug>.html, one series' page in a report of the summary layout
 // (report_layout.h): its verdict, its charts inline (Fig. 1 and the GCI
 // chart), and its rows of the series, coverage, grids, GCI and failures

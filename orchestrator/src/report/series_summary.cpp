@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Per-series digest and extrapolation call (see series_summary.h).
 #include "report/series_summary.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Per-series digest for the report: grids sorted by Δ*, the converged
 // (h, f) pairs that go to the extrapolation, counts of failed and pending
 // grids, and the extrapolation itself (PHYSICS.md §8) when it could be made.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stability map's data (stability_map.h).
 #include "report/stability_map.h"
 

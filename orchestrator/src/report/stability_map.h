@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "Where methods fail" (docs/REPORTS.md, stability map): the outcome of
 // every grid of every series, one row per series and one column per Δ*, a
 // line per series saying down to which Δ* it converges and where and why it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The "Where methods fail" section (stability_section.h).
 #include "report/stability_section.h"
 

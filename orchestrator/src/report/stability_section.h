@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's "Where methods fail" section (docs/REPORTS.md, stability
 // map), kept out of the page layout so that it hooks in with one call per
 // rendering:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG rendering of a Chart (see svg_chart.h for the conventions).
 //
 // Layout (pixels): title band on top, y tick labels on the left, x tick

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A small, dependency-free SVG chart writer: line/scatter series with
 // markers, linear or log axes with nice ticks, axis labels, legend, title,
 // symmetric error bars, dashed horizontal reference lines.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Marker, arrow and error-bar elements (see svg_marker.h).
 #include "report/svg_marker.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG elements for point markers, off-scale arrows and error bars, centred
 // on pixel coordinates (used by svg_chart.cpp).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Markup "_{…}" / "^{…}" to SVG tspans (see svg_text.h).
 #include "report/svg_text.h"
 

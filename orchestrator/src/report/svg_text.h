@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chart text with sub- and superscripts. Labels are written in a small
 // markup: "f_{0}" is f with subscript 0, "h^{p}" h with superscript p,
 // "σ_{RE}/R_{f}" the fit-quality ratio. Everything else is plain text.

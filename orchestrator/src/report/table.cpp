@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CSV, Markdown and HTML renderings of a Table (see table.h).
 #include "report/table.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A report table and its three renderings: CSV (full precision, every
 // column), Markdown and HTML (rounded values, display columns only).
 #pragma once

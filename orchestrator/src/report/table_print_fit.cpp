@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Print layout of a report table from its narrowest width (see table_print_fit.h).
 #include "report/table_print_fit.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How a report table is laid out on paper. In print a text cell or header
 // breaks only at spaces, never inside a word or a number, and a number cell
 // does not break at all (fit-portrait, fit-landscape) or only at its spaces

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Escaping and number formatting for the report (see text_format.h).
 #include "report/text_format.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Text helpers shared by the report writers: escaping for XML/HTML, CSV
 // fields (RFC 4180 quoting), Markdown table cells, and number formatting
 // that is locale-independent and deterministic (same input, same bytes).

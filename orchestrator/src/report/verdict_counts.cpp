@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Verdict counts and the worst series (see verdict_counts.h).
 #include "report/verdict_counts.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a study page shows of its verdicts when it has too many series to
 // list them all (report_layout.h): how many series got each verdict, over
 // the study and per factor level, and which series are the worst.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // decide_adaptive_step (sched/adaptive_decision.h).
 #include "sched/adaptive_decision.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stopping rule of an adaptive series (docs/EXTRAPOLATION.md "Adaptive
 // series"), a pure function of the series so far. After every finished rung
 // of the ladder (study/adaptive_grids.h), in this order:

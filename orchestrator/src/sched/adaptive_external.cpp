@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // external_rungs (sched/adaptive_external.h).
 #include "sched/adaptive_external.h"
 

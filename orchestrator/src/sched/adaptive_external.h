@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rungs of an external case's adaptive ladder when a series is decided
 // (sched/adaptive_series.h, docs/EXTERNAL.md "Adaptive series"): the ladder
 // of study/external_ladder.h from the stored study definition, each rung's

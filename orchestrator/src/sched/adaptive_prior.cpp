@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // prior_rde_model (sched/adaptive_prior.h).
 #include "sched/adaptive_prior.h"
 

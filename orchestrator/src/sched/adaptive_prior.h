@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Prior data for `plan --target-rde` (study/target_plan.h): the finished
 // series of similar cases in a database.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive series decisions in the store (sched/adaptive_series.h).
 #include "sched/adaptive_series.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive series in the store (docs/ORCHESTRATOR.md "Adaptive series"):
 // after each finished job, before ready series are extrapolated, every
 // adaptive series of the study whose jobs have all finished gets one

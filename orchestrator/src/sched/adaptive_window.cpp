@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fit windows of adaptive series (sched/adaptive_window.h).
 #include "sched/adaptive_window.h"
 

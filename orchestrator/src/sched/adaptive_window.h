@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fit window of an adaptive series (docs/EXTRAPOLATION.md "Adaptive
 // series"): when the fit on all n converged grids is not `converged`, the
 // coarse grids may lie outside the asymptotic range and spoil every fit that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adoption of stale jobs (see adopt.h).
 #include "sched/adopt.h"
 

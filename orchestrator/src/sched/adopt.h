@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adoption after a crash (docs/ORCHESTRATOR.md, "Adoption"): jobs a dead
 // `run`/`daemon` left in an external queue (jobs.external_id "slurm:ID") are
 // taken over by this process and handed to the executor, which asks the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The budget rule (sched/budget.h).
 #include "sched/budget.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which queued job starts next on this machine: a memory and job-count
 // budget (docs/ORCHESTRATOR.md, "Budgets").
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Budgeted claims (sched/budget_claim.h).
 #include "sched/budget_claim.h"
 

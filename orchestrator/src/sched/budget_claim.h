@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Claims the job the budget rule picks (sched/budget.h) from the queued
 // jobs of one study (or of every active study).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // read_cost_history (sched/cost_history.h).
 #include "sched/cost_history.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cost model's history (study/cost_model.h, rule (a)): the finished,
 // converged jobs of a database with their cell counts, measured CPU
 // seconds and peak memory, grouped by similarity key. Jobs that stopped at max_iterations,

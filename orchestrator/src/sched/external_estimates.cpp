@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ExternalEstimates (sched/external_estimates.h).
 #include "sched/external_estimates.h"
 

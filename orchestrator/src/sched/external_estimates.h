@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Estimates of external jobs for the scheduler loop (study/external_plan.h):
 // the declared figures of their study, else the measured history of their
 // case, read from the database once and extended as the loop's jobs finish.

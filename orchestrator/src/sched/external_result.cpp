@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Results of external jobs (sched/external_result.h).
 #include "sched/external_result.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Results of external jobs (docs/EXTERNAL.md): what the scheduler adds to
 // them before they are stored, and how a finished one is logged.
 #pragma once

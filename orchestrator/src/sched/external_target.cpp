@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // plan --target-rde of an external study (sched/external_target.h).
 #include "sched/external_target.h"
 

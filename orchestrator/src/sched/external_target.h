@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree plan --target-rde X` of an external study (docs/EXTERNAL.md
 // "Adaptive series and plan --target-rde"): for each series (case ×
 // quantity), which of the study's grids (its grid list, or its adaptive

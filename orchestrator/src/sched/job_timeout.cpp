@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The default per-job timeout (sched/job_timeout.h).
 #include "sched/job_timeout.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The default per-job timeout, derived from the plan's cost model
 // (study/study_plan.h) so that a hung or runaway worker is stopped without
 // the user having to guess a limit:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The memory budget's source (sched/memory_budget.h).
 #include "sched/memory_budget.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The memory budget of a local `run`/`daemon` (sched/budget.h):
 // --memory-budget SIZE when given, else this machine's MemAvailable
 // (/proc/meminfo) when the scheduler starts, else its physical memory.

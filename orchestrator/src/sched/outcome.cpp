@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Failure classification of finished jobs (see outcome.h).
 #include "sched/outcome.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a finished job means for the store (failure classification):
 //
 //   exit 0 + valid converged result      → final: converged

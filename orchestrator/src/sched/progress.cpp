@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Progress output (see progress.h).
 #include "sched/progress.h"
 

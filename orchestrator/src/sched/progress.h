@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Progress of a run: on a terminal one updating line
 //   [12/40] running 2, failed 1, ETA 1 h 05 min
 // (ETA = eta_s when given — the cost model scaled by measured times,

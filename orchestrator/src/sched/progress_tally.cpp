@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ProgressTally (sched/progress_tally.h).
 #include "sched/progress_tally.h"
 

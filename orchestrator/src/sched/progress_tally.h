@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Progress counts at a cost per event that does not grow with the study.
 //
 // Counting a study in the store reads every one of its jobs, and its ETA

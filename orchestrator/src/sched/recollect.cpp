@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Re-collection of finished external jobs (sched/recollect.h).
 #include "sched/recollect.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Re-collection of external jobs (docs/EXTERNAL.md "The study"): when a
 // study's collect section changed for jobs that are already finished, each
 // is read again from its run folder with `gridfree-worker collect JOB.json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ReportPacer (sched/report_pacer.h).
 #include "sched/report_pacer.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // When the scheduler rewrites a study's report while its series finish.
 //
 // A report is rebuilt whole (report/report.h), at a cost that grows with the

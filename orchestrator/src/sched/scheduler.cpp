@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scheduler loop (see scheduler.h).
 #include "sched/scheduler.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scheduler loop (ninja's, in spirit):
 //
 //   1. while the budget allows (sched/budget.h: -j jobs, the memory budget,

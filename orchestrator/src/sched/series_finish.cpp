@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Series completion: extrapolation rows into the store; report data from the store.
 #include "sched/series_finish.h"
 

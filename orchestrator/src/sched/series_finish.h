@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What happens when a series' last job finishes: extrapolate its converged
 // points (h = Δ*, f = dp_star; PHYSICS.md §8, through the report's
 // Extrapolator seam), store its fits (one row each, `chosen` on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stability part of `status --json` (stability_status.h).
 #include "sched/stability_status.h"
 

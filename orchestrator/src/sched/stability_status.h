@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree status STUDY --json`'s "stability" (docs/ORCHESTRATOR.md): the
 // outcome of every grid of every series, read from the view v_stability
 // (store/stability_view.h), the same words as the report's stability map:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // StopSignals (see stop_signal.h).
 #include "sched/stop_signal.h"
 

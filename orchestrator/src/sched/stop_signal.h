@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SIGINT/SIGTERM → a stop request the scheduler loop polls. The handler
 // only sets a sig_atomic_t flag (the one piece of global state); the
 // previous handlers are restored when the guard goes away.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ETA of a study from the cost model and measured times (see study_eta.h).
 #include "sched/study_eta.h"
 

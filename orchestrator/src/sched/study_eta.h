@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Time left in a study from the plan's cost model (study/study_plan.h)
 // scaled by the times measured so far:
 //

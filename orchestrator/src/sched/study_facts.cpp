@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // StudyFactsCache (sched/study_facts.h).
 #include "sched/study_facts.h"
 

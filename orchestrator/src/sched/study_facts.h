@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the scheduler loop needs from a study's definition, parsed once per
 // study and process (a definition grows with its cases; parsing it per job
 // would make the cost per job grow with the study).

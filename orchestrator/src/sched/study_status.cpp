@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Inside view of one study for `gridfree status STUDY` (see study_status.h).
 #include "sched/study_status.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What `gridfree status STUDY` shows inside a study (docs/ORCHESTRATOR.md):
 // per series the grids done, verdict, f0 and the finest grid's RDE; per
 // running job its grid, cells and the worker's latest progress (read from

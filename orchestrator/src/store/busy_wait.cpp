@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Waiting for a busy database (store/busy_wait.h).
 #include "store/busy_wait.h"
 

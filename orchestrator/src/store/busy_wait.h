@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Waiting for a database another process is writing to.
 //
 // SQLite in WAL mode lets readers run beside one writer; a second writer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running jobs by whether their claimant lives (see orphans.h).
 #include "store/orphans.h"
 

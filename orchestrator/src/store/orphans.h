@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jobs the database shows as running whose claimant process is gone (a
 // `run` or `daemon` killed): read-only, with the same test a starting
 // `run`/`daemon` uses to requeue or adopt them (owner_alive, store/owner.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Process identity for job claims (see owner.h).
 #include "store/owner.h"
 

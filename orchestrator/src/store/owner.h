@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Who claimed a job: "host:pid:starttime". The start time (from
 // /proc/<pid>/stat) tells a live claimant from a recycled pid, so a restart
 // can requeue exactly the jobs whose owner process is gone.

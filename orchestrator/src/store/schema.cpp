@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Schema version 11 (step 1: the tables; 2: nominal Δ*, v_series; 3: Slurm queue
 // state; 4: series verdicts; 5: series transfer columns; 6: alignment check;
 // 7: adaptive series; 8: ensembles; 9: indexes for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The database schema (docs/INTERFACE.md §5 plus bookkeeping columns) and its
 // migrations, keyed by PRAGMA user_version.
 #pragma once

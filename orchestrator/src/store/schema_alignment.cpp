@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Step 6 — the alignment check of a study (feature: alignment check as a
 // study option, docs/DATABASE.md, docs/TRANSFER.md "Alignment check").
 //

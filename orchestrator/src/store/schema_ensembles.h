@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Schema step 8 — ensembles (feature: ensembles of frozen instances,
 // docs/DATABASE.md "ensembles", docs/EXTRAPOLATION.md "Ensembles").
 //

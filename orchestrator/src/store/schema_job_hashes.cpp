@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Step 11 — job identity from the normalised document (job/job_normalise.h):
 // every job whose stored hash is the one this solver version gave before
 // defaults were filled in (job_hash_before_defaults of its spec_json) gets

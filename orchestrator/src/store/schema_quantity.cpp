@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Step 12 — the quantity of a series (external cases, docs/EXTERNAL.md "The
 // study"): an external case has one series per declared quantity, all over
 // the same jobs, so the series table gains `quantity` ('' for the dp* of a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Migration steps kept in their own files (schema.cpp runs them in order).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Step 5 — transfer columns of a series (feature: transfer methods as study
 // factors, docs/DATABASE.md). The series table gains the expanded transfer
 // of its jobs: pre_deposition, sampling, integration, diffusivity ('' where

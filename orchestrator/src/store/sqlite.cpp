@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RAII wrappers over sqlite3 (see sqlite.h).
 #include "store/sqlite.h"
 

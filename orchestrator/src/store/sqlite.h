@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Thin RAII wrappers over the sqlite3 C API: a connection, a prepared
 // statement, and a transaction that rolls back unless committed.
 // Every failure throws SqliteError with SQLite's message. A connection keeps

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // v_stability (stability_view.h).
 #include "store/stability_view.h"
 

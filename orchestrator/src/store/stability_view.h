@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The view v_stability (docs/DATABASE.md "v_stability"): one row per grid of
 // a series (alignment variants left out) with its outcome word, classified
 // as the report's stability map does (report/stability_map.h):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Prepared statements kept for reuse (see statement_cache.h).
 #include "store/statement_cache.h"
 

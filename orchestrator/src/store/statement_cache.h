@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Prepared statements kept for reuse on one connection, keyed by their SQL
 // text. A Statement takes an idle handle for its text (or prepares one) and
 // gives it back, reset and with its bindings cleared, when it ends; so a

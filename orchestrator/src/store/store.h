@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The study/job store: SQLite in WAL mode (schema.h), shared by any number
 // of `gridfree run`/`daemon` processes. Every state change is one
 // transaction; a job is claimed inside BEGIN IMMEDIATE, so two processes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Store: adoption of jobs left in an external queue by a process that is
 // gone, their queue state, and `retry` of failed jobs (see store.h).
 #include "store/store.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Store side of the alignment check and the series' transfer columns (store_alignment.h).
 #include "store/store_alignment.h"
 

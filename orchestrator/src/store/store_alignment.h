@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Store side of the study's alignment check (schema step 6,
 // schema_alignment.cpp) and the series' transfer columns (step 5).
 #pragma once

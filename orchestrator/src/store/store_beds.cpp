@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bed summaries per case (see store_beds.h).
 #include "store/store_beds.h"
 

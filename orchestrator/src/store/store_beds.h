@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bed summary (the result's "bed", docs/INTERFACE.md §2) of each case of
 // a study, read for the report's "About this case" (report/bed_about.h).
 #pragma once

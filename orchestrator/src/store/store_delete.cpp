@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Store: removing a study (gridfree delete, run --replace) and collecting
 // the jobs no study needs any more.
 #include "core/input_error.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ensembles rows of a study (see store_ensembles.h).
 #include "store/store_ensembles.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ensembles table (schema step 5, store/schema_ensembles.h): written at
 // submit, read for the report.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Store: the job state machine (claim, record, retry, release, stale requeue).
 #include "store/store.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Store: re-collection of external jobs (docs/EXTERNAL.md "The study"). A
 // finished external job's result records the collect section it was read
 // with ("collected_with", sched/external_result.h); when the study's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The adaptive grids' ladder and their parsing (study/adaptive_grids.h).
 #include "study/adaptive_grids.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive grid series (docs/INTERFACE.md §3, docs/EXTRAPOLATION.md
 // "Adaptive series"): a study's grids given as a target instead of a list,
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // adaptive_rungs (study/adaptive_rungs.h).
 #include "study/adaptive_rungs.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rungs of an adaptive ladder for one case (study/adaptive_grids.h) with
 // their cells (round(L*/Δ*) per direction, grid/grid.h) and the cost model's
 // estimates (study/study_plan.h).

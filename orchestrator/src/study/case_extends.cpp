@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // resolve_case_extends (study/case_extends.h): depth-first over the chain of
 // bases, with the chain kept to report cycles.
 #include "study/case_extends.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Case inheritance in a study: a case may name another case of the same
 // study in "extends" and give only the fields it changes.
 //

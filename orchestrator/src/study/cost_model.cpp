@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cost ratio of a job (study/cost_model.h).
 #include "study/cost_model.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The case-dependent factor of the cost model (docs/ORCHESTRATOR.md "Cost
 // model"). The base model (study/study_plan.h) was fitted to the bursting
 // bubble; a job's estimate is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Recursive-descent evaluation of study expressions (study/expression.h).
 //
 //   expr    := term (('+' | '-') term)*

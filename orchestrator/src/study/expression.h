@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A small arithmetic expression language for external cases' derived grid
 // variables (docs/INTERFACE.md "External cases"): numbers, names of
 // variables, + - * / ^ (power, right-associative, above unary minus:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // External cases: reading and checking /cases/NAME/external, the values on
 // each grid, and the job document (study/external_case.h).
 #include "study/external_case.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // External cases (docs/INTERFACE.md §3 "External cases", docs/EXTERNAL.md
 // "The study"): a case run by another code. The study gives a template
 // folder, the files of it to render (@@name@@ placeholders), grid variables

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // external_ladder, external_expressions (study/external_ladder.h).
 #include "study/external_ladder.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The adaptive ladder of an external case (docs/EXTERNAL.md "Adaptive
 // series"): the study gives its one grid variable's coarsest and finest
 // values (study/adaptive_grids.h, AdaptiveVariable); the ladder is in the

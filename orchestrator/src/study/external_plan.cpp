@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cost estimates and the plan of external studies (study/external_plan.h).
 #include "study/external_plan.h"
 

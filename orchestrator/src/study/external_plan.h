@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cost estimates of external jobs (docs/EXTERNAL.md "Cost"): gridfree's own
 // cost model (study/study_plan.h) describes its gas solver, not another
 // code, so an external job's CPU time and memory come from

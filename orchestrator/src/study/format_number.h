@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One number through a printf format ("%.3g", "%.0f", …), for the
 // sentences the planner and the adaptive scheduler write.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // grid_listing, neighbour_warnings and their text/JSON forms (grid_listing.h).
 #include "study/grid_listing.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every grid of a study, per case: the Δ* requested, the Δ* actually
 // obtained after rounding the cells (Δ* = (V/N)^(1/3)/d), and the cells; and
 // warnings about neighbouring grids too close to tell apart.

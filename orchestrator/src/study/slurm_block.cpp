@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slurm settings keys and sbatch words (see slurm_block.h).
 #include "study/slurm_block.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Slurm settings object's vocabulary (a study's "slurm" block and the
 // --slurm-profile file, docs/ORCHESTRATOR.md "Slurm settings"): its keys,
 // and what an extra sbatch word (sbatch_args, --sbatch-arg) sets. In study/

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small Study / SeriesKey helpers (labels, look-ups, Δ* of a grid).
 #include "study/study.h"
 

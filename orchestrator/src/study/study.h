@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A grid-convergence study (docs/INTERFACE.md §3): cases × factor levels × grids.
 //
 // parse_study() reads and validates a study file (schema + semantics, every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alignment check as a study option (study_alignment.h).
 #include "study/study_alignment.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alignment check as a study option (docs/INTERFACE.md §3,
 // docs/TRANSFER.md "Alignment check"):
 //

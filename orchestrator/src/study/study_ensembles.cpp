@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // parse_ensembles: the "ensembles" field of a study (see study_ensembles.h).
 #include "study/study_ensembles.h"
 

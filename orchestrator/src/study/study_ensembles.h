@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ensembles (docs/INTERFACE.md §3 "ensembles"): named groups of cases that
 // are instances of one physical state — frozen snapshots of one transient
 // run, say. The study runs every case as usual; the report and the database

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // expand(): a Study → its series (the design) and one job per (series, grid).
 //
 // factorial:      every case × convection × fwhm_dp × drag × deposition;

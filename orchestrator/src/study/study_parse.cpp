@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // parse_study: a study file → Study, after the schema (schemas/study.schema.json)
 // and the semantic checks of docs/INTERFACE.md §3/§4. Every problem is collected
 // with its JSON pointer before one InputError is thrown.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Memory and time estimates of a study's jobs (see study_plan.h for the model).
 #include "study/study_plan.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Resource estimates for planning and validation: memory and run time of a
 // job from its cell count. The constants are the one place to tune them.
 //

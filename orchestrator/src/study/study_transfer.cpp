@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Transfer methods as a study factor (study_transfer.h).
 #include "study/study_transfer.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Transfer methods as a study factor (docs/INTERFACE.md §3, docs/TRANSFER.md).
 //
 // A level of factors.deposition is a name ("diffusion", "centroid", the

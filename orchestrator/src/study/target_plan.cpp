@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // plan --target-rde (study/target_plan.h).
 #include "study/target_plan.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree plan --target-rde X` (docs/INTERFACE.md "plan"): which grids a
 // target RDE needs and what they cost, before anything runs.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive grid series end to end with the fake worker (tests/fixtures/
 // fake_worker.sh: dp* = 1159 + Δ*, so f0 = 1159 exactly): a series runs
 // coarse to fine and stops at the first grid whose RDE meets the target,

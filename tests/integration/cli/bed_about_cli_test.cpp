@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The beds' structure end to end with the real worker: every job's result
 // carries the summary of the bed it solved (docs/INTERFACE.md §2 "bed"), and
 // the report's "About this case: bed structure" shows those numbers, one

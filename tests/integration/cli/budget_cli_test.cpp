@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run --memory-budget` with the fake worker's mem mode
 // (tests/fixtures/fake_worker.sh: sleeps in proportion to the worker's memory
 // estimate and records its start and end): jobs that each need 60 % of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker solve --checkpoint/--resume (docs/INTERFACE.md §2,
 // "Checkpoints"): a solve stopped by SIGTERM at about half its outer
 // iterations writes a checkpoint and exits 130; resumed, it finishes in the

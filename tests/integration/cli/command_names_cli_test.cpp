@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Command names as users type them (docs/INTERFACE.md §3): a mistyped command
 // names the nearest one (exit 2), `version` and -V print the version, each
 // executable's --version names itself, and `help COMMAND` is COMMAND --help.

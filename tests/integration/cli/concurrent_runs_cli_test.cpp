@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Two processes on one database at once: two `run`s of the same study, and
 // a `run` beside a `daemon`. Jobs are claimed atomically (BEGIN IMMEDIATE,
 // store/store_jobs.cpp), so each job is solved once; both processes finish

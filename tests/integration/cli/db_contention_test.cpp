@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Concurrent access to one database (store/busy_wait.h): a command meeting
 // another process's write transaction waits for it, says on stderr which
 // process holds the database, and succeeds once it is free; when the holder

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An ensemble of frozen snapshots read from one LAMMPS dump, run end to end
 // by the real worker: the way a user verifies a transient run at several
 // instants (docs/PARTICLES.md). Three held-out bubble configurations (seeds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ensembles end to end with the fake worker (tests/fixtures/fake_worker.sh,
 // whose case okplusK gives dp* = 1159 + K + Δ*, so f0 = 1159 + K): three
 // instances K = 0, 2, 7 under two drag laws and one case outside the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive series of an external study (docs/EXTERNAL.md "Adaptive
 // series") with the poly test solver (tests/fixtures/external/poly:
 // f(h) = 1 + 0.5 h², so f0 = 1 and the finest grid's RDE ≈ 1.25 · 0.5 h²).

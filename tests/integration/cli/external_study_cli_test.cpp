@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run` on an external study (docs/EXTERNAL.md "The study"): the
 // poly test solver (tests/fixtures/external/poly) gives f(h) = 1 + 0.5 h²,
 // so the series must come out converged with f0 = 1 and p = 2; a second run

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree extrapolate` as users run it: a JSON and a CSV series in, the
 // docs/INTERFACE.md §4 JSON out on stdout with exit 0; invalid input exits 2 with a
 // message on stderr naming the problem.

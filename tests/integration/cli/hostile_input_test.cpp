@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile input to both executables (docs/LIMITS.md): the corpus in
 // tests/fixtures/hostile/ (studies and jobs: overflowing numbers, bad UTF-8,
 // zero inflow, Δ* = 1e-300, a domain of 1e300, implausible properties, ...)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree` end to end with the fake worker (tests/fixtures/fake_worker.sh
 // as GRIDFREE_WORKER): validate, the broken-study corpus (exit 2, every
 // problem's JSON pointer, no database created or changed), run with mixed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree-worker particles` as users run it: a generator spec or a file to
 // convert in, a CSV out, exit 0 with the per-region counts on stderr;
 // invalid input exits 2 naming the JSON path (or file:line:col) and writes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run` when the report cannot be written (its folder cannot be
 // created: a file is in the way): exit 1, no report path printed, the
 // results still in the database; and a temporary report file left by a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A stop during the report's chart export: SIGINT while the PDF/PNG
 // converter runs (a stand-in rsvg-convert on PATH that writes part of its
 // output and then sleeps a minute) ends `gridfree run` within seconds with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run --timeout` with the real worker (docs/ORCHESTRATOR.md,
 // "Checkpoints"): a job stopped by the run's timeout at about half its
 // outer iterations writes its checkpoint, is queued again without spending

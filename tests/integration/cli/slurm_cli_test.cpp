@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run --executor slurm` against fake Slurm commands on a temporary
 // PATH (docs/ORCHESTRATOR.md "Slurm"): a missing command is refused before
 // the database exists (exit 2); sbatch refusing a submission requeues the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gridfree-worker solve, run as a process (docs/INTERFACE.md §2): exit codes,
 // the result document, --vtk, and the failure of centroid deposition on
 // cells smaller than a particle.

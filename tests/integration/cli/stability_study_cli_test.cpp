@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shipped stability study (studies/stability.json) in a reduced form,
 // run end to end with the real worker: the dense bed at Re_p 0.1 and 300,
 // central and first-order upwind, the filter narrower than every cell

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree status` as it is now, not as last stored: a job shown running
 // whose run was killed is "orphaned", a "running" study nobody works on is
 // "queued", cancelled jobs have a column, and no ETA is shown for a study

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run` of a study with the alignment check, with the fake worker
 // (tests/fixtures/fake_worker.sh: dp* = 1159 + Δ* of the job's cells): the
 // variants run as jobs, the series is extrapolated from its own grids only,

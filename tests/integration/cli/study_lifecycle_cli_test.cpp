@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree` study life cycle with the fake worker (tests/fixtures/
 // fake_worker.sh): a changed study under a stored name is refused with the
 // way out (--replace), `run --replace` reuses finished identical jobs,

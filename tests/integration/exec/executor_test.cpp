@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Executors against tests/fixtures/fake_worker.sh: LocalExecutor's exit
 // codes, signals, timeouts (the whole process group dies), launch failures
 // and kill_all; SlurmExecutor with fake sbatch/squeue/sacct on PATH.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exit notices (exec/exit_notice.h): a child's pidfd is readable once the
 // child has exited, not before, so the executor's wait can sleep on it.
 #include <gtest/gtest.h>

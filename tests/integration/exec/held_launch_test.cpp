@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Held launches of LocalExecutor (exec/local_executor.h): the worker's
 // process exists (its identity can be recorded) but does not run until
 // release(); if the orchestrator dies before releasing, the worker never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree-worker solve` and `collect` on external jobs run by a fake
 // solver (tests/fixtures/external/fake_solver/solver.sh): every
 // classification rule end to end with the reason in the result, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The lid-driven cavity (tests/fixtures/external/cavity: icoFoam, Re 10,
 // N x N x 1 cells, Courant number 1, end time 1 s, when the flow is steady)
 // run by `gridfree-worker solve` through Debian's OpenFOAM: converged results

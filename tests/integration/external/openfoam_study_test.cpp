@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run` on a small OpenFOAM study (the lid-driven cavity of
 // studies/external/cavity on coarser grids, N = 10 ... 40), as
 // a user meets it (docs/EXTERNAL.md "Tutorial"): every job's h is the

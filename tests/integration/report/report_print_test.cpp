@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report of a quickstart-like study run with the fake worker, printed
 // to A4 PDF by headless Chromium: every number of every table cell of
 // report.html appears whole in the PDF's text (pdftotext -layout), so none

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Integration of the report with the real extrapolation library, and a
 // rendering check of report.html in headless Chromium (skipped when no
 // Chromium is installed: `make test` installs it).

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A throwaway single-node Slurm (munged + slurmctld + slurmd, Debian's
 # slurm-wlm 22.05) in a scratch folder, without systemd, for the Slurm tests.
 #

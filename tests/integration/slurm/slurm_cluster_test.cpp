@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree run --executor slurm` against a real single-node Slurm
 // (tests/integration/slurm/slurm_cluster.sh: munged + slurmctld + slurmd from
 // Debian, started per test in a scratch folder) with the fake worker

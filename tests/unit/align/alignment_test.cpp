@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alignment check's pieces (align/alignment.h): the variant product,
 // the particle shift (wrap on periodic axes, refusal out of a bounded
 // domain), and the spread rule (max − min)/mean only when every variant

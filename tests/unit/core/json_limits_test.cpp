@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Limits on JSON text (core/json_limits.h): depth, number range and size are
 // refused at their line:column before parsing; brackets and digits inside
 // strings do not count; messages stay printable and short.

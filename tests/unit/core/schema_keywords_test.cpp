@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON-Schema keyword checks (core/schema_keywords.h) on small inline
 // schemas: each keyword accepts what draft-07 accepts, rejects what it
 // rejects, and reports at the pointer of the offending value.

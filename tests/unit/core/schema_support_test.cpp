@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The implemented JSON-Schema subset (core/schema_support.h): every shipped
 // schema stays inside it, and a schema outside it is refused rather than
 // half-applied.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Solids fraction and drag field from particles (coupling/), against values
 // computed here by hand: one particle's volume over one cell, β = φ D.
 #include <gtest/gtest.h>

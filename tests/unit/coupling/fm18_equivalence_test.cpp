@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fm18 preset computes exactly what the solver computed before the
 // transfer options existed (docs/TRANSFER.md): centroid deposition filtered
 // by eight backward-Euler steps with the paper's ν, and drag from the values

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Interphase force balance and uniform beds for every transfer
 // (coupling/drag_field.h, docs/TRANSFER.md).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Centroid deposition (PHYSICS.md §3.1): ownership of cells, conservation of
 // particle volume, and the ε_s > 1 failure of grid-coupled deposition.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Filter integration names (deposition/filter_integration.h): every value
 // has one name and the name parses back to it.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The diffusion filter (PHYSICS.md §3.2): diffusivities, conservation,
 // symmetry of periodic wrap and of zero-flux walls, and the no-op case.
 // The statistical checks (variance per step, Gaussian profile) are in

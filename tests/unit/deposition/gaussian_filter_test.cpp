@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gaussian filter integration (deposition/filter.h, FilterIntegration::
 // kGaussian) in real space: the filtered unit impulse is the normalised
 // sampled Gaussian g_m of variance s² = 2ν (periodised on a periodic axis,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The sampled-Gaussian symbol (deposition/gaussian_symbol.h) against an
 // independent direct sum in space, its normalisation, and the aliasing bound
 // on its variance.

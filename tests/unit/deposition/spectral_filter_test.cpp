@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact pseudo-time filter (deposition/spectral_filter.h): a single
 // eigenmode decays by exactly exp(ν λ_k); Σ α is conserved to round-off; the
 // operator is symmetric; and backward Euler with N steps converges to it at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Transfer kernels (deposition/kernel_weights.h, transfer_stencils.h):
 // weights sum to 1, trilinear reproduces linear functions and has the
 // second moment t(1 − t)Δ², the gaussian cell integrals have mean x and

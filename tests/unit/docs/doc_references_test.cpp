@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The repository speaks of itself only: every document a file names
 // (an upper-case `.md` name, or a path under docs/) exists in the source tree, and nothing points
 // at a folder outside it (a sibling `shared` folder, this machine's paths).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drag laws (PHYSICS.md §4) against values computed independently here.
 //
 // 1. A long-double transcription of PHYSICS.md written in the other form:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Run folders sharded by the first two hex digits of the job hash
 // (exec/executor.h run_dir_for), with folders of the older flat layout
 // still found where they are.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How a Slurm task that left the queue ended (exec/slurm_exit.h): sacct's
 // words, the worker's result file, the exit_code file.
 #include <gtest/gtest.h>

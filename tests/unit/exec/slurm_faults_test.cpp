@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slurm fault classes (exec/slurm_faults.h) on Slurm 22.05's own messages,
 // as sbatch and squeue print them.
 #include <gtest/gtest.h>

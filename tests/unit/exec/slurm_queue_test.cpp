@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // squeue output parsing (exec/slurm_queue.h).
 #include <gtest/gtest.h>
 

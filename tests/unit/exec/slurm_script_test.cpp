@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slurm array scripts (exec/slurm_script.h): run by /bin/sh here with a fake
 // worker that records its arguments, so the quoting is checked by a shell.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slurm settings (exec/slurm_settings.h): profile fields, refusals naming
 // the field, flags over profile.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stop grace derived from the worker's progress file
 // (exec/worker_progress.h): base + 1.5 × the longest outer iteration,
 // bounded, and the base whenever the iteration time is unknown.

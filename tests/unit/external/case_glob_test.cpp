@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Globs in the case folder: * inside a component, ** across folders, and
 // the newest of several matches.
 #include <gtest/gtest.h>

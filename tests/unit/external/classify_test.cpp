@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // classify_external: each rule on its own with the reason it gives, and the
 // order (an earlier rule wins over a later one that also applies).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // parse_external_job: a full job read back field by field, and problems
 // named by their JSON pointers (all of them at once).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The driver's result document from a hand-made case folder (collect, so
 // nothing runs): it passes schemas/result.schema.json through
 // result_from_json, holds the quantities, and a nan quantity is written as

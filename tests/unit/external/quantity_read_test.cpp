@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a quantity's last two records: data rows (comments and blank lines
 // skipped, OpenFOAM vectors split), regex matches, and the problem text
 // when there is nothing to read.

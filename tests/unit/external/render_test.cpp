@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // @@name@@ rendering: numbers as written, undefined names refused with file
 // and line, anything that is not a placeholder left alone (OpenFOAM's own
 // braces, $variables and #include lines, a lone @@).

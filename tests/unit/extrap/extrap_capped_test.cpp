@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The default procedure, capped (docs/EXTRAPOLATION.md "Default procedure"):
 // the paper's procedure except that an observed order above p_high is
 // capped at p_high (the fit f0 + c h^p_high), and U₀ = 1.25 |f0 − f₁| + σ_RE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Eça & Hoekstra (2014) option: which fit and which rule is applied for
 // each range of the observed order, and U recomputed independently from the
 // reported fit (EH14 eqs. 19-21).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Weighted least squares, the power-law fit and the fixed-order fits against
 // data built from known coefficients (exact up to rounding of the data).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The default (Fullmer & Musser 2018, PHYSICS.md §8) procedure through the
 // public API extrapolate(h, f, opts) with --method fm: method choice, σ_RE, Fs, U and RDE
 // recomputed independently from the reported fits, invariances, and the

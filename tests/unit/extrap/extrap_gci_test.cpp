@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Three-grid GCI (Celik et al. 2008) against the paper's worked examples and
 // against hand-computed cases, plus its failure modes.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid-design warnings of validate/plan (extrap/grid_design.h): the
 // degrees-of-freedom rule and the all-coarse rule, each at its boundary.
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON of docs/INTERFACE.md §4: keys, nulls, ordering of grids and triplets.
 #include <cmath>
 #include <string>

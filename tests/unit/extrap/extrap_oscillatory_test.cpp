@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Regression test of the project's point (Fullmer & Musser 2018): on an
 // oscillatory 18-grid series the three-grid GCI answers scatter wildly from
 // triplet to triplet while the weighted least-squares extrapolation stays

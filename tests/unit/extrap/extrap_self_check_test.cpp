@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Coverage self-check (extrap/self_check.h): which windows are made, how
 // each is judged against the whole series' f0, the summary and its
 // warning rule; then the library's own extrapolation on exact data.

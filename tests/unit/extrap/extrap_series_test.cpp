@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Input validation, sorting, weights and file parsing of a series.
 #include <cmath>
 #include <functional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Synthetic series shared by the extrap/ unit tests.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Verdict rules (docs/EXTRAPOLATION.md "Verdicts"): each rule isolated on a
 // hand-built extrapolation result through the pure judge(), then whole
 // series through extrapolate() — exact power laws whose verdict follows from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checkpoint files (flow/checkpoint.h): a round trip restores every value
 // bit for bit; a checkpoint of another job or grid, a truncated or altered
 // file, or a missing one is refused with its reason.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Staggered index maps, the face-to-centre average, deterministic sums and
 // the dp_star probe (checked on fields whose answers are known exactly).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The geometric iterative-error estimate: exact on q_n = q_∞ + C ρ^n
 // (monotone and alternating), absent where it cannot be trusted.
 #include <gtest/gtest.h>

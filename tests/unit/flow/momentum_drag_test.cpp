@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The drag terms of the momentum assembly (flow/momentum.h): the face value
 // of β and βv̄ is the mean of the face's two cells, with a zero-gradient
 // ghost beyond a non-periodic boundary. Checked by assembling the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Jacobian-free Newton–GMRES driver (flow/newton_krylov.h) on algebraic
 // problems with known roots.
 #include <gtest/gtest.h>

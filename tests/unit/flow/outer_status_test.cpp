@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The not_converged reason's note on drag-update checks (flow/outer_status.h):
 // the trial's job quoted residuals all below tolerance because they were the
 // last iteration's, while the steady criterion is checked only on

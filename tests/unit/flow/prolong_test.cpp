@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Nested-start interpolation (flow/prolong.h): trilinear interpolation is
 // exact for fields linear in the coordinates wherever the fine point lies
 // between coarse lattice points, wraps on periodic axes, and is held

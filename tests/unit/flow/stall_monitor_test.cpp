@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stall test of the nested start's coarse levels (flow/stall_monitor.h).
 #include "flow/stall_monitor.h"
 

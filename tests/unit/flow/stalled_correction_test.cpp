@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // numerics.stall_remedy "relax_correction" (docs/SOLVER.md "Stalled outer
 // iterations"): the dense bed of studies/stability.json at Re_p 300 with
 // superbee and the FWHM 6 filter on Δ* 2 (5 × 20 × 5 cells, well under a

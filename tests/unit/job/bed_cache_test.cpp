@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bed cache (job/bed_cache.h): a stored bed is the generated one bit for
 // bit, the key separates every input a generator reads, and a damaged file
 // is never used.

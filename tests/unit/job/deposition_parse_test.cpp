@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // numerics.deposition (job/deposition_parse.cpp): presets expand to the
 // explicit fields, defaults are the default transfer, and every
 // contradictory combination is refused with the field's JSON pointer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The documented limits are the code's: docs/LIMITS.md's memory model and
 // inflow-velocity range and INTERFACE.md's y_low row read back and compared
 // with job/memory_estimate.h and job/case_plausibility.h.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Generated beds are pinned bit for bit: a job's hash names its generator
 // spec, not its particles, so a stored result stays valid only while the
 // generator gives the same bed. These tests pin the SHA-256 of the particle

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job hashes of external jobs (docs/INTERFACE.md §2): the template's place
 // and the collect section are not part of a job's identity; the template's
 // contents, the variables, the command and the version are. And the

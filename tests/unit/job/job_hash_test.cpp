@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canonical JSON and the job hash: key order and integer/float spelling do
 // not matter; any change of a value does.
 #include <gtest/gtest.h>

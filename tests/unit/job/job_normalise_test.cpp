@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job identity from the normalised document (job/job_normalise.h): a job
 // that leaves out an optional field and the same job with the field's
 // documented default (the schema's "default", which SchemaDefaults ties to

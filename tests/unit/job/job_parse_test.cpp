@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // parse_job / parse_case / read_json_file: the contract's job parses into
 // the expected values (defaults filled in), semantic errors are collected
 // with their JSON pointers, malformed JSON names file:line:col.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A refused job's problems: the schema's and the parsers' together (a type
 // error does not hide an independent range error), each once, none inside a
 // value the schema could not read (core/follow_on_problems.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The result document: what to_json writes validates against
 // schemas/result.schema.json and reads back field for field.
 #include <gtest/gtest.h>

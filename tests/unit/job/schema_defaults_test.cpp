@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The "default" of every optional job field in schemas/job.schema.json (what
 // users read) is the value the parser uses when the field is left out.
 #include <gtest/gtest.h>

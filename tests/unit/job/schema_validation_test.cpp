@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Schema validation (core/schema_validation.h) on the embedded schemas: the
 // contract's own examples pass; each kind of mistake is reported once, at
 // the JSON pointer of the offending value, with a reason naming what is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SHA-256 against the FIPS 180-2 test vectors (appendix B: "abc", the
 // 448-bit message, one million 'a') and the empty message, plus messages
 // whose lengths straddle the padding boundaries (55/56/63/64/65/119/120

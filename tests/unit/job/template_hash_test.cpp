@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // template_sha256: the recipe (pinned against an independent computation),
 // what changes it (contents, x-bit, a rename), what does not (a copy
 // elsewhere, an empty folder), and what it refuses (symlinks leaving the

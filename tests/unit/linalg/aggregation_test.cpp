@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Aggregation coarsening (linalg/aggregation.h): the coarse operator equals
 // the Galerkin product Pᵀ A P formed here with dense matrices from the
 // definition of P (P_iI = 1 if fine cell i lies in aggregate I), row sums

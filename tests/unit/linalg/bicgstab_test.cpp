@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // BiCGSTAB (linalg/bicgstab.h) on non-symmetric convection–diffusion
 // systems: manufactured discrete solutions (b = A φ_exact), both
 // preconditioners, Péclet numbers from diffusion- to convection-dominated,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Results must not depend on the OpenMP thread count: every reduction is
 // fixed-order (vector_ops.h) and every parallel loop writes disjoint
 // entries, so 1 and 2 threads must give bitwise identical solutions and

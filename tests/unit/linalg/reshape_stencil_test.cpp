@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // reshape_stencil (linalg/stencil.h): one system serves grids of different
 // sizes in turn — every array takes the new grid's cell count, the grid is
 // replaced, and a system shrunk and grown back keeps its storage.

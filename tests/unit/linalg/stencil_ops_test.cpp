@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Residual, product and checks of the 7-point stencil (linalg/stencil_ops.h)
 // against a hand-built 3×3×3 system evaluated here with explicit modular
 // neighbour arithmetic, independently of the library's row bookkeeping.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Conjugate gradients with multigrid and Jacobi preconditioning on
 // manufactured discrete problems: pick φ_exact, compute b = A φ_exact with
 // the stencil product, solve from φ = 0 and compare with φ_exact.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Structure statistics (particles/bed_structure.h) on beds whose answer is
 // known, and the check the sscp_like emulsion must pass: a random bed has
 // no structure-factor peak of order N, the lattice option has one (so the

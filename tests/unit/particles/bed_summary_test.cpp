@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bed summary a job's result carries (particles/bed_summary.h): the
 // `ordered` flag separates a lattice from a random packing with the rule of
 // BedStructure.RandomEmulsionHasNoPeakOfOrderN (core S/N ≥ 0.05); the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cell list finds every neighbour a brute-force search finds, also on
 // periodic axes with only one or two bins (each bin visited once).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The compression emulsion ("emulsion": "compression", particles/
 // compression_packing.h) on the generator tests' bed at ε_s = 0.59 (0.45 s;
 // 0.60 takes about 45 s on this narrow bed with its bubble): no overlap, no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bursting-bubble configuration (PHYSICS.md §6) on the paper's domain.
 // Region counts are recomputed here from the geometry; the solids fraction
 // of each region is measured by classifying every particle centre (not from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The optional sscp_like parameters act as documented (docs/PARTICLES.md):
 // bubble_solids_fraction sets the number of particles in each bubble,
 // round(ε_b V_bubble / V_p); relaxation_sweeps moves the emulsion

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // sscp_like on a small bed with walls in x and z: the emulsion holds its
 // target fraction (counted from the particle centres here), bubbles are
 // dilute, nothing overlaps (O(N²)), nothing crosses a wall or the bed top,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // uniform_random: the count is round(ε_s V / V_p), the particles stay in the
 // box, never overlap (O(N²) check), and fractions RSA cannot reach are
 // refused up front, naming the field.

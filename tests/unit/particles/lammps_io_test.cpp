@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // LAMMPS / LIGGGHTS dumps: the chosen snapshot's particles in cm relative to
 // the box's low corner, whatever the column order or coordinate style; a
 // box that differs from the case's domain and malformed dumps are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Independent checks for generated configurations, deliberately simple:
 // an O(N²) loop over all pairs with the nearest periodic image found by
 // trying the shifts −L, 0, +L on every periodic axis (no cell list, no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Particle files: CSV round trips are exact; an MFiX particle_input.dat
 // (both the headerless 2016 format and the "Version 2.0" format) gives the
 // positions written into it; malformed files and impossible configurations

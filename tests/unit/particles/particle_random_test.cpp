@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The portable random streams behind the generators: the engine is the
 // standard's mt19937_64 (its 10000th output from the default seed 5489 is
 // fixed by the C++ standard at 9981545732273789042), our uniform mapping

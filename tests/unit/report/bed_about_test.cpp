@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "About this case: bed structure" (report/bed_about.h): one line per case
 // and one per ensemble with ranges over its instances, the ordered flag at a
 // core peak of 0.05 N, and no section when no result carries a bed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reports of external series (report/external_labels.h): the chart names
 // the declared quantity with its description and units and h with its
 // declared meaning; a physical series keeps DP* and Δ*.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's alignment section (orchestrator/src/report/report_alignment.h):
 // the spread rule, the comparison with the grid's U/|f|, the warning, and a
 // report without the check showing no section.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the report's chart rules: the log-axis rule, sub/superscript
 // markup, legends sized to their text, point labels that do not collide,
 // f0 ± U rounding in the charts, GCI bands by convergence type, the Pareto

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The coverage self-check in the report (report/series_coverage.h): a table
 // row per checked series, the summary line, and a warning in the attention
 // list when U missed the answer in too many coarser windows. The series is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ensemble statistics and the uncertainty budget (report/ensemble_stats.h,
 // report/ensemble_budget.h, report/report_ensembles.h) on hand-made series:
 // three instances × two drag laws with known f0 and U, checked against

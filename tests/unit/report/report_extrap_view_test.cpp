@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the adapter from the contract's extrapolation JSON (docs/INTERFACE.md §4)
 // to the report's ExtrapolationView.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Layout of the report on screen and in print: no chart text outside its
 // SVG's box (long titles, subtitles, notes, legends and tick labels),
 // point labels that never overlap each other or a marker, every section of

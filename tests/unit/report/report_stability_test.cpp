@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stability map (report/stability_map.h, stability_section.h): every
 // outcome word from a grid's status and reason, the per-series line, the
 // GCI-vs-least-squares tally, failures first and the row cap, and the SVG's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The summary layout of a study too large for one page (report_layout.h):
 // the study page summarises and links one page per series; a rewrite with
 // nothing changed rewrites no series file, one changed series rewrites its

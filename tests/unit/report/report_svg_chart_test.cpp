@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the SVG chart writer: tick generation (values worked out by hand
 // in the comments), log axes, escaping, well-formed output, and the
 // conventions for points without a value or off scale.

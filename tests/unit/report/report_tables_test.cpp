@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the series digest, one-factor differences and table renderings,
 // on the synthetic study of report_test_data.h (expected values computed
 // here from the manufactured data, not read back from the report code).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Synthetic study data and a stand-in extrapolator for the report tests.
 //
 // Three series:

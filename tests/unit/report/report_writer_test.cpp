@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end test of write_study_report on the synthetic study of
 // report_test_data.h: every file is written, the tables hold the numbers
 // computed here from the manufactured data, the HTML is self-contained and

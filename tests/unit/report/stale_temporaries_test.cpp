@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // remove_stale_temporaries (report/atomic_file.h): what a writer killed with
 // kill -9 left behind goes at the next report write; a live writer's
 // temporary file and the report's own files stay.

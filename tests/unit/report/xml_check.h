@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A tiny well-formedness check for the XML/SVG (and the XML-like HTML) the
 // report writes: every tag closed in order, attributes quoted, no raw '<'
 // or stray '&' in text. Not a full XML parser: enough to catch unbalanced

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The adaptive stopping rule (sched/adaptive_decision.h) on hand-made
 // series: converged and meeting the target stops; pre-asymptotic, too few
 // grids, or an RDE above the target continues with the next rung; a cap or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fit window of adaptive series (sched/adaptive_window.h) on hand-made
 // series through the library's own extrapolation: coarse grids that follow a
 // different law than the fine ones spoil the fit on all grids, the window of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The budget rule (sched/budget.h) and the memory budget's source
 // (sched/memory_budget.h).
 #include <gtest/gtest.h>

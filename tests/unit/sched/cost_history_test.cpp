@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cost model's history rule end to end on a database (sched/cost_history.h,
 // study/cost_model.h, make_plan): a store holding finished jobs of two of
 // the three instances of studies/sscp_coarse.json, with CPU times built from

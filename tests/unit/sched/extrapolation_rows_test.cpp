@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stored rows of a series' extrapolation (sched/series_finish.h): one
 // row per reported fit and `chosen` on the fit f0 comes from, whatever the
 // method — so v_series' f0 (the chosen row) is never empty for a fitted series.

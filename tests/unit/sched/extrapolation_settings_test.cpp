@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A study's "extrapolation" settings reach the extrapolation of its series:
 // weights, p_range and method are read from the stored definition, and the
 // weights change the fit (uniform vs 1/h weights give different f0 on data

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The default per-job timeout (sched/job_timeout.h): the floor for small
 // grids, the stated multiple of the plan's estimate for large ones.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ProgressTally: the store is counted at most once per recount interval and
 // the ETA priced at most once per ETA interval; the scheduler's own events
 // move the counts in between, and exact() recounts at once.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The terminal progress line and log lines never share a line
 // (sched/progress.h): a log line written while the progress line is open
 // first clears it ("\r\033[K"), then the progress line is drawn again.

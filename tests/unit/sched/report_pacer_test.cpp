@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ReportPacer: the first report at once, then at most one write per
 // max(min interval, cost factor × the last write's duration); every pending
 // study is listed when all are asked for.

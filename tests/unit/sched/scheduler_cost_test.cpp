@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The store work of one job through the scheduler loop — claim (budget
 // rule's candidates + claim), record, finish the series it completes,
 // refresh the study's status — does not grow with the study: counted in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scheduler loop against a FakeExecutor (no processes): every outcome
 // class (converged, not converged, invalid, crash, garbage, flaky) lands in
 // the store with the right status and retry count, the study finishes, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // v_stability (store/stability_view.h): one row per grid with the outcome
 // word the report's stability map gives the same grid (report/stability_map.h
 // grid_outcome), for every status, the worker's outcome field and the

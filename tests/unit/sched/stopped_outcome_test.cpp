@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exit 130 of a worker (sched/outcome.h): stopped with a checkpoint written
 // during this attempt → released (the next attempt resumes, no attempt
 // spent), also when our own timeout sent the SIGTERM; without one, or killed

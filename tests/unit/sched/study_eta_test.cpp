@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ETA from the cost model scaled by measured times (sched/study_eta.h):
 // the arithmetic of the header on small hand-checked cases.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TVD limiters (PHYSICS.md §5): the defining properties, checked on a dense
 // set of r (exact arithmetic on the formulas, so tolerances are round-off).
 #include <gtest/gtest.h>

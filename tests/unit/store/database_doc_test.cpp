@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // docs/DATABASE.md describes the schema users query: every table and view
 // of a database at the current schema version has exactly one entry
 // (**name** at the start of a line), and that entry names every one of its

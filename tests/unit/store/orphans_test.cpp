@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running jobs by whether their claimant lives (store/orphans.h): the
 // read-only view `status` uses, with the test a starting run/daemon uses.
 #include <gtest/gtest.h>

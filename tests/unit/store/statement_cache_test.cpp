@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Prepared statements kept for reuse on a connection (store/statement_cache.h):
 // a handle comes back reset, with its bindings cleared, and follows schema
 // changes; a text in use twice gets two handles; past the cap, statements

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The store's side of adoption after a crash (take_over_stale), the queue
 // state shown by `status`, and `retry` of failed jobs.
 #include <gtest/gtest.h>

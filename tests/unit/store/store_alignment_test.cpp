@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A study with the alignment check in the store: variant jobs are queued
 // and claimed like any job but stay out of the series' points and
 // readiness; v_alignment and alignment_values give the spread of dp* over a

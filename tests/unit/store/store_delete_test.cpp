@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Removing a study (gridfree delete) and replacing a changed one (run
 // --replace): shared jobs stay, orphans go with their results and events, finished
 // identical jobs are reused; the nominal Δ* and the per-series view v_series.

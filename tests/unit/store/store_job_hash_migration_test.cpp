@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Schema step 11 (store/schema_job_hashes.cpp) on a version-10 database whose
 // jobs carry the hashes of before defaults were filled in: every job of this
 // solver version is rehashed from its stored document, so a study that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Schema steps 5 and 6 on a version-4 database with data: the series table
 // is rebuilt with its transfer columns (filled from the jobs' documents, by
 // the worker's rules) and the wider UNIQUE key; every row that references a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Schema step 12 on a version-11 database with data: the series table is
 // rebuilt with `quantity` ('' for existing series) in its UNIQUE key; every
 // column, index and referencing row survives, and two series that differ

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The SQLite store: schema of docs/INTERFACE.md §5, submit/resume/reuse, the job
 // state machine (claim, retry, release, stale requeue), atomic claims from
 // two connections, series completion and integrity.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive grids in a study (study/adaptive_grids.h): every field checked
 // with its JSON pointer, the ladder Δ*_k = coarsest/ratio^k down to
 // finest_delta_star, expand() starting each series with its first four rungs,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cost model's case-dependent ratio (study/cost_model.h): Re_p against
 // hand-computed values, the a-priori rule on the two physics classes, what
 // makes two jobs similar, and the history rule on synthetic samples whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The study expression evaluator (study/expression.h): precedence, the
 // functions, and errors that name the expression, the position and what
 // was expected.

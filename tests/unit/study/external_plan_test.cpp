@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cost estimates of external jobs (study/external_plan.h): declared per-cell
 // figures, else a fit to the case's measured history, else unknown — never
 // gridfree's own solver model.

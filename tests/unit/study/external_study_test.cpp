@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // External cases in studies (study/external_case.h): validation problems
 // with their JSON paths, and expansion (h, variables, jobs per grid, series
 // per quantity, what the job hash does and does not follow).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studies shipped in studies/: each one parses and expands without
 // duplicate jobs, and the reduced, part and single-series studies behind
 // docs/REPRODUCTION.md are made of the same job documents as the full

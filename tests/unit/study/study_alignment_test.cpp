@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alignment check as a study option (orchestrator/src/study/study_alignment.h):
 // variant jobs per series and checked grid, with their cell offsets, linked
 // to the grid's own job and kept out of the series' jobs; bad options refused

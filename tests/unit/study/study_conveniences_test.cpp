@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Study-writing conveniences: cases that extend other cases (RFC 7386 merge,
 // chains, cycles and unknown bases refused with the path), factors left out
 // (their documented defaults), the baseline's defaults, the grid listing of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The "ensembles" field of a study (orchestrator/src/study/study_ensembles.h):
 // parsed into Study::ensembles; unknown cases, a case in two ensembles, a
 // case listed twice, an ensemble of one, a bad name and instances with

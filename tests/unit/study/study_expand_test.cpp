@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Study expansion and job identity: series counts of both designs (factorial
 // = product of levels; one-at-a-time = 1 + Σ(levels − 1), cases counted as a
 // factor), no duplicate jobs, cells = round(L*/Δ*), and job_hash sensitivity

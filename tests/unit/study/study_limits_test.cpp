@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Inputs a study accepts only if they can be meant (docs/LIMITS.md "Study
 // documents"): at least two cells along the flow, filter widths within the
 // domain, a named one-at-a-time baseline, bounded name and description

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A study's "numerics" reach every job it expands to (tolerances,
 // max_iterations, stall_window, deposition.diffusivity), and its factor levels set the
 // job's convection, drag and deposition: what each job then computes from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A refused study's problems, table-driven: each independent problem once,
 // at a place that is in the file (a value, or a missing key of an object
 // that is), and none that follows from another (a string domain_dp has no

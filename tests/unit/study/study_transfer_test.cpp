@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Transfer methods as study factors (orchestrator/src/study/study_transfer.h):
 // object levels reach the job documents, name the series, fill the series'
 // transfer columns; contradictory or duplicate levels are refused with their

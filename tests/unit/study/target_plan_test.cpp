@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // plan --target-rde's model and choice (study/target_plan.h): the log-log
 // least squares recovers a and p of an exact power law; fewer than two
 // distinct Δ* fall back to the a-priori model; the needed grids run from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An adaptive series on a real, small bursting bubble (the fictitious
 // bubble of docs/PHYSICS.md §6 in a 20 × 60 × 10 dp domain, the smallest the
 // generator allows with the freeboard cut at 60; each job a few seconds)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The diffusion filter as a Gaussian filter (PHYSICS.md §3.2).
 //
 // 1. Variance: on an unbounded line, one backward-Euler step of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole deposition kernel (pre-deposition + filter) against its target
 // (docs/TRANSFER.md): σ² = δ_f²/(8 ln 2) per axis.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bursting-bubble baseline (PHYSICS.md §6: PC1, superbee, bvk, fwhm 6)
 // on the coarse grid Δ* = 2 (15 × 100 × 5 cells).
 //

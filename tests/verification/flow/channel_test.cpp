@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plane Poiseuille flow and the code-verification hook (docs/SOLVER.md).
 //
 // A channel with no-slip walls at x = 0 and x = L, periodic in y and z, no

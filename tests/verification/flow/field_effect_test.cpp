@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every field of a job changes what is computed, as docs/INTERFACE.md §6
 // says: the job of docs/INTERFACE.md §2 on a coarse grid (6 × 40 × 2 cells,
 // Δ* = 5) is solved once as given and once per changed field, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the iterations fail, the result says so (issue "flow solver",
 // docs/INTERFACE.md §2): a run stopped by max_iterations is `not_converged` with
 // the residuals in its reason; a run that blows up is `diverged`, carries no

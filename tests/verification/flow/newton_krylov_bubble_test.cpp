@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Newton–Krylov prototype (flow/newton_outer.h) on the bursting-bubble
 // baseline (PHYSICS.md §6: PC1, superbee, bvk, default transfer) at
 // Δ* = 3.3 (9 × 61 × 3 cells): the same fixed point as plain SIMPLEC; and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // numerics.stall_window on a job's own grid (docs/SOLVER.md "Stalled outer
 // iterations"): it ends a limit cycle that more iterations do not break,
 // and it leaves a converging job's computation bit for bit as it was.

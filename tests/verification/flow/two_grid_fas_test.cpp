@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The two-grid FAS prototype (flow/two_grid_fas.h) on the bursting-bubble
 // baseline (PHYSICS.md §6: PC1, superbee, bvk, default transfer) at Δ* = 2
 // (15 × 100 × 5 cells, coarse level 8 × 50 × 3): the coarse-grid

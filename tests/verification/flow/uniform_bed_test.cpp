@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Uniform continuum beds (PHYSICS.md §6): periodic x, z; mass inflow at
 // y = 0; pressure outflow at the top. Away from the inlet every face carries
 // u = U0/ε_g and the 1-D momentum balance gives exactly

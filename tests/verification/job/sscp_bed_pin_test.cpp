@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bits of the SSCP study's instance t1 (studies/sscp_reduced.json: about
 // 92,900 particles, 10–16 s to generate, hence a verification test, not a
 // unit test): the SHA-256 of its particle array, as for the small beds of

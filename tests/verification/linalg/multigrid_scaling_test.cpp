@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Multigrid-preconditioned CG must do O(N) work: its iteration count may
 // grow only slowly under grid refinement, while Jacobi-PCG's grows like the
 // number of cells per direction. Problems as in bench/linalg_bench.cpp

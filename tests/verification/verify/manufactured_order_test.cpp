@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Observed orders of accuracy of the flow solver and the filter on
 // manufactured solutions (verify/): the same checks `gridfree-worker verify`
 // runs, on the quick grid sequence. Expected: 1 for FOU, 2 for the other

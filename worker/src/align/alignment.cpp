@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid-alignment check (alignment.h).
 #include "align/alignment.h"
 

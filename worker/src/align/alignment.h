@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grid-alignment check (docs/TRANSFER.md "Alignment check"): the part of
 // the grid error that one series of grids cannot see. The job's grid is
 // re-solved with the cell counts changed by a few cells and/or the particles

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A physical case (docs/INTERFACE.md §2, the "case" object of a job) as typed values:
 // domain, particle size, gas, boundaries, where the particles come from, and
 // the pressure-drop probes. Parsed by job/job_spec.h (parse_case); kept here,

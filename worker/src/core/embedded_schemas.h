@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON Schemas of schemas/, compiled into the binaries.
 #pragma once
 

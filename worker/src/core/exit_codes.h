@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Process exit codes shared by both executables (docs/INTERFACE.md §2, §4).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dropping repeated and follow-on problems (core/follow_on_problems.h).
 #include "core/follow_on_problems.h"
 

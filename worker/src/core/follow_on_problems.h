@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One report per problem: a validation that runs the schema and then the
 // parsers over one document finds some problems twice (the schema and a
 // parser both refuse a value) and some only because of another (a string

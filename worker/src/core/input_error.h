@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Problems with user input, each tied to where it was found.
 //
 // A Problem's `where` is a JSON pointer ("/case/domain_dp/1"), a file

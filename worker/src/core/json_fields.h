@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading typed fields out of JSON objects while collecting problems.
 //
 // Each reader looks up `key` in `obj` (the object found at JSON pointer

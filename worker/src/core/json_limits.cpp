@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Limits on JSON text from users (core/json_limits.h).
 #include "core/json_limits.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Parsing JSON text from users within stated limits (docs/LIMITS.md).
 //
 // Before nlohmann parses anything, one linear pass over the text checks

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Identity of a process on this machine, robust to pid reuse:
 // "host:pid:starttime", the start time being field 22 of /proc/<pid>/stat.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The keyword checks of the JSON-Schema validator (core/schema_keywords.h).
 #include "core/schema_keywords.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The keyword checks of the JSON-Schema validator (subset in
 // core/schema_support.h; entry point core/schema_validation.h).
 //

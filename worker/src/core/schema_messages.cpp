@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wording of schema problems (core/schema_messages.h).
 #include "core/schema_messages.h"
 

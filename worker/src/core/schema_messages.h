@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wording of schema problems (used by core/schema_keywords.cpp), kept in one
 // place so every reason reads the same way and stays short: a value is
 // quoted only up to a short prefix, and arrays / objects are described by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Linear-time matching of the schemas' patterns (core/schema_pattern.h).
 #include "core/schema_pattern.h"
 

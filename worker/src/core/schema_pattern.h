@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The "pattern" keyword of the schemas, matched in time linear in the string.
 //
 // std::regex backtracks recursively and overflows the stack on long user

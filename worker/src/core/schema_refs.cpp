@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "$ref" resolution (core/schema_refs.h).
 #include "core/schema_refs.h"
 

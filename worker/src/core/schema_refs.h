@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // "$ref" resolution for the embedded JSON Schemas (core/schema_validation.h).
 //
 // A reference is "#/definitions/x" within the current schema document or

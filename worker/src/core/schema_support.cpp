@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checking that a schema uses only the implemented subset (core/schema_support.h).
 #include "core/schema_support.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON-Schema (draft-07) subset the validator implements, and the check
 // that a schema stays inside it.
 //

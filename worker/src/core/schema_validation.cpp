@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Validation against the embedded schemas (core/schema_validation.h): finds
 // the schema documents, checks them against the implemented subset and runs
 // the keyword checks (core/schema_keywords.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Validation of JSON documents against the embedded JSON Schemas (schemas/).
 //
 // The project's own validator of a JSON-Schema draft-07 subset

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What every iterative solve returns (Basilisk's mgstats, in spirit).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drag field from particles or a uniform bed (equations in drag_field.h).
 #include "coupling/drag_field.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The interphase drag field β (and βv̄) on the grid (PHYSICS.md §3).
 //
 // Particles:  f_p = D(ε_g(p), |u(p) − v_p|) V_p, then

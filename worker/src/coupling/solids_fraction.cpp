@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ε_s from particles: centroid deposition, optional Gaussian filter (see header).
 #include "coupling/solids_fraction.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Solids volume fraction on the grid (PHYSICS.md §3).
 //
 //   centroid:   ε_s(c) = Σ_{p ∈ c} V_p / V_c                 (grid-coupled)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Centroid (grid-coupled) deposition (PHYSICS.md §3.1):
 //
 //   q_c = Σ_{p : centre of p in c} q(p) / V_c,     ε_s(c) = Σ_{p∈c} (π d_p³/6) / V_c.

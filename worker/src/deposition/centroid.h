@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Centroid (grid-coupled) deposition (PHYSICS.md §3.1): each particle's
 // quantity goes to the cell containing its centre, divided by V_c.
 #pragma once

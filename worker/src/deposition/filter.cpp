@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The grid-independent Gaussian filter (PHYSICS.md §3.2):
 //
 //   ∂α/∂τ = Σ_i ν_i ∂²α/∂x_i²,  τ ∈ [0, 1],

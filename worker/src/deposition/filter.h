@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The grid-independent Gaussian filter (PHYSICS.md §3.2): implicit diffusion
 //   ∂α/∂τ = ν_i ∂²α/∂x_i²,  τ ∈ [0, 1],
 // with ν_i = max(δ_f² − Δ_i², 0)/(16 ln 2) ("seed", the paper's),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Filter integration names (filter_integration.h).
 #include "deposition/filter_integration.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The names of the filter integrations (numerics.deposition.integration,
 // docs/TRANSFER.md) — the one list the job parser, the job JSON and the
 // orchestrator's study factors read:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Assembly of one backward-Euler step of the diffusion filter and the
 // conservation correction; see filter_system.h for the equations.
 // The assembly loop runs in parallel (each cell writes only its own

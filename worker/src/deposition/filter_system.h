@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The linear system of one backward-Euler step of the diffusion filter
 // (PHYSICS.md §3.2), and the correction that makes it conserve exactly.
 //

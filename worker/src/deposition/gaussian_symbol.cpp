@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sampled-Gaussian symbol (gaussian_symbol.h): a truncated theta series,
 // summed in frequency or in space, whichever converges faster.
 #include "deposition/gaussian_symbol.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The multiplier of the sampled-Gaussian filter (docs/TRANSFER.md,
 // docs/PHYSICS.md §3.2): convolution along an axis of spacing Δ with the
 // positive kernel

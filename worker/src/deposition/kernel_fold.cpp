@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Folding raw kernel weights onto the grid (kernel_weights.h).
 //   periodic:  i → i mod n
 //   wall:      i → r = i mod 2n;  r ≥ n ? 2n − 1 − r : r   (images at both walls)

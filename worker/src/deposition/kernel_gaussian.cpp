@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact cell integrals of a truncated normal density along one axis
 // (kernel_weights.h):
 //   w(i) = ½[erf((b_i − x)/(√2σ)) − erf((a_i − x)/(√2σ))] / Z,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cloud-in-cell weights along one axis (kernel_weights.h):
 //   s = x/Δ − ½,  i₀ = ⌊s⌋,  t = s − i₀,   w(i₀) = 1 − t,  w(i₀ + 1) = t.
 // The second moment about x is t(1 − t)Δ²; over a uniform sub-cell position

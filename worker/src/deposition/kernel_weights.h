@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One-dimensional transfer kernels (docs/PHYSICS.md §3, docs/TRANSFER.md):
 // the weight a particle at coordinate x gives to each cell along one axis.
 // A 3-D kernel is the product of three of these (all kernels here are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact pseudo-time diffusion filter by real transforms (spectral_filter.h).
 // FFTW's row-major 3-D layout with dimensions (n_z, n_y, n_x) is exactly
 // Grid::index order (x fastest). A separable r2r transform applies the 1-D

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The diffusion filter solved exactly in pseudo-time (docs/PHYSICS.md §3.2,
 // docs/TRANSFER.md): the semi-discrete equation
 //

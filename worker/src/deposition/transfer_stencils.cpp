@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Per-particle stencils from the 1-D kernels (transfer_stencils.h).
 // Non-periodic coordinates are clamped into [0, L] first (a centre on the
 // wall deposits like one just inside it).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Per-particle transfer stencils: which cells a particle's kernel touches and
 // with what weight (docs/PHYSICS.md §3, docs/TRANSFER.md). Built once for a
 // frozen bed; used both ways, so deposition and sampling are exact adjoints:

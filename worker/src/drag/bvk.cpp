@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Beetstra, van der Hoef & Kuipers (2007) drag, monodisperse, as in MFiX
 // DRAG_BVK (PHYSICS.md §4). With φ = ε_s, Re = Re_s = ε_g ρ_g |u−v| d / μ_g:
 //

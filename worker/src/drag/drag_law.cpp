@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drag-law registry and dispatch (PHYSICS.md §4): names, references and
 // fitted ranges of the six laws, and drag_coefficient() = D with β = ε_s D.
 #include "drag/drag_law.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gas-particle drag laws (PHYSICS.md §4), as pure functions.
 //
 // Every law returns D, the drag coefficient per unit particle volume

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The individual drag laws behind drag_coefficient() (PHYSICS.md §4).
 //
 // Each function returns D (g/(cm^3 s)) with β = ε_s D (MFiX Model A), for a

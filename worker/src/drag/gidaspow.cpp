@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gidaspow drag (Ding & Gidaspow 1990) and its smooth blend (Lathouwers &
 // Bellan 2000), as in MFiX DRAG_GIDASPOW / DRAG_GIDASPOW_BLEND (PHYSICS.md §4):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hill, Koch & Ladd (2001) drag as extended by Benyahia, Syamlal & O'Brien
 // (2006), as in MFiX DRAG_KOCH_HILL (PHYSICS.md §4). φ = ε_s, Re_h = Re_s/2:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Syamlal & O'Brien (1988) drag, as in MFiX DRAG_SYAM_OBRIEN with its default
 // constants c1 = 0.8, d1 = 2.65 (PHYSICS.md §4). Re_i = ρ_g |u−v| d / μ_g
 // (no ε_g), A = ε_g^4.14, B = 0.8 ε_g^1.28 (ε_g ≤ 0.85) or ε_g^2.65:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wen & Yu (1966) drag, as in MFiX DRAG_WEN_YU (PHYSICS.md §4):
 //
 //   D = (3/4) C_d ρ_g ε_g |u−v| ε_g^(−2.65) / d,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Finding a quantity's file in the case folder: a glob relative to case/
 // with `*` and `?` inside one path component, `[...]` sets, and `**` for
 // any number of folders (docs/EXTERNAL.md "Collection").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The outcome of an external job from what was seen in its case folder
 // (docs/EXTERNAL.md "Classification"). Pure: the driver gathers the
 // observations, classify_external decides. Rules, first match wins:

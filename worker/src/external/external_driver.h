@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The external driver behind `gridfree-worker solve` and `collect` for a job
 // with /case/external (docs/EXTERNAL.md "How the driver runs your code"):
 // check the template's hash, copy it to <run folder>/case/, render the

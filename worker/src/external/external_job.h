@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The external-solver job (docs/INTERFACE.md "External solvers",
 // docs/EXTERNAL.md): the part of a job document under /case/external, read
 // and checked by parse_external_job.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // parse_external_job (external_job.h): field by field, each problem named by
 // its JSON pointer.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running an external job's command (docs/EXTERNAL.md "How the driver runs
 // your code"): setup lines and argv, in the case folder, stdin from
 // /dev/null, stdout and stderr into two files, watched until it ends or a

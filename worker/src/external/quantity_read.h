@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a quantity's records out of a file's text (docs/EXTERNAL.md
 // "Collection"). Pure functions over the text; the driver reads the files.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // @@name@@ placeholders in an external template's files (docs/EXTERNAL.md
 // "Rendering"). A placeholder is @@, a name ([A-Za-z_][A-Za-z0-9_]*), @@; any
 // other @@ is left as it is. Pure functions.

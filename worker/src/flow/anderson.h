@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Anderson acceleration of the SIMPLEC fixed-point map (an opt-in
 // prototype, SimpleSettings::anderson_depth; docs/DESIGN.md records what it
 // measured).

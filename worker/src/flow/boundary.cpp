@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ghost-value rules of PHYSICS.md §2 (see boundary.h).
 #include "flow/boundary.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Boundary conditions of the gas flow as ghost values (PHYSICS.md §2).
 //
 // Each non-periodic domain side is one of

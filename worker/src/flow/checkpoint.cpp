@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checkpoint files (flow/checkpoint.h).
 #include "flow/checkpoint.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checkpoints of a solve that was asked to stop (docs/INTERFACE.md §2,
 // "Checkpoints"): the iterated fields (p, u, β, βv̄) and the loop counters,
 // so that a resumed solve continues with the next outer iteration exactly as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FlowState ↔ checkpoint arrays (flow/checkpoint_fields.h).
 #include "flow/checkpoint_fields.h"
 

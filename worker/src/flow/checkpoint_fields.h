@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one place that knows which FlowState members a checkpoint holds and
 // how they are stored (flow/checkpoint.h): a change of FlowState's storage
 // is an edit here only.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The coarse level of the two-grid FAS prototype (fas_coarse_level.h).
 #include "flow/fas_coarse_level.h"
 

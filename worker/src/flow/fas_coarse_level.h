@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The coarse level of the two-grid FAS prototype (two_grid_fas.h): the job
 // on the nested start's grid, with ε_s deposited and the drag computed from
 // the same particles as on the fine grid (as in solve.cpp), started from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Index maps of the staggered face fields and the face-to-centre average.
 #include "flow/fields.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cell and face fields of the staggered (MAC) grid, with their index maps.
 //
 // Pressure, ε_g, ε_s and β live at cell centres (CellField, Grid::index

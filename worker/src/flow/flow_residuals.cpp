@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Residual fields of the momentum and continuity equations (flow_residuals.h).
 #include "flow/flow_residuals.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Residual fields of the discrete steady equations at a state (the drag
 // field of the state held), for the FAS coarse-grid correction
 // (two_grid_fas.h):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Face averages of cell quantities:  φ̄_face = ½ (φ_L + φ_R)  (MFiX), with the
 // ghost value of boundary.h beyond a non-periodic boundary.
 #include "flow/flow_state.h"

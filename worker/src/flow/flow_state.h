@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The gas-flow problem and its unknowns on the staggered grid.
 //
 //   FlowProblem  what does not change during the outer iterations: grid,

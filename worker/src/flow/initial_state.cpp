@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plug flow and the analytic-drag pressure profile as the initial guess.
 #include "flow/initial_state.h"
 

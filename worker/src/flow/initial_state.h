@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Iteration-0 state (warm start) of a frozen-bed solve.
 //
 //   ε_g = 1 − ε_s;

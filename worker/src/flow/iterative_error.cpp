@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Geometric-series iterative-error estimate (iterative_error.h).
 #include "flow/iterative_error.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Iterative-error estimate of a monitored quantity q from its history.
 //
 // With values spaced w iterations apart at the back of the history,

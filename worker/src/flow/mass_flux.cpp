@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // F = ρ ε̄ u A on every face, ∇·u and the mass balance of a cell (mass_flux.h).
 #include "flow/mass_flux.h"
 

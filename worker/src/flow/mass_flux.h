@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Face mass fluxes and the cell velocity divergence.
 //
 //   F_a(face) = ρ_g ε̄_g,face u_a(face) A_a          (g/s, positive along +a)

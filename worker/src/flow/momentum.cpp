@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Assembly of one momentum component (equation in momentum.h).
 #include "flow/momentum.h"
 

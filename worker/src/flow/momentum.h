@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Momentum equation of one gas-velocity component on its faces.
 //
 // Model A (PHYSICS.md §1), steady, on the control volume V centred on face P

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jacobian-free Newton–GMRES with Eisenstat–Walker forcing, backtracking
 // and a fixed-point fallback (newton_krylov.h).
 #include "flow/newton_krylov.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jacobian-free Newton–Krylov for a fixed-point residual F(x) = G(x) − x
 // (docs/SOLVER.md "Newton–Krylov prototype").
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Newton–Krylov outer iterations on the SIMPLEC sweep (newton_outer.h).
 #include "flow/newton_outer.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Newton–Krylov outer iterations: an opt-in prototype beside run_simple
 // (SimpleSettings::newton_krylov_restart > 0; docs/SOLVER.md "Newton–Krylov
 // prototype", docs/DESIGN.md "Outer convergence").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The outer loops' divergence test and reasons (outer_status.h).
 #include "flow/outer_status.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What an outer loop (SIMPLEC, simple_loop.h, and the Newton–Krylov and
 // two-grid FAS prototypes) concludes from one iteration's residuals: the
 // divergence test and the words of its not_converged / diverged reasons.

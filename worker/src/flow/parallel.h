@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Deterministic parallel reductions.
 //
 // An OpenMP `reduction(+:...)` adds partial sums in an order that depends on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wall time per step of an outer iteration: each charge adds the seconds
 // since the last charge (or construction) to one step's total.
 #pragma once

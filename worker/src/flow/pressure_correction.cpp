@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Assembly and solution of the pressure-correction equation (see the header).
 #include "flow/pressure_correction.h"
 

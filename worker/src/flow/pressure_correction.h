@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SIMPLEC pressure correction.
 //
 // With u_f = u*_f + d_f (p'_L − p'_R) on every face (d = 0 on fixed faces),

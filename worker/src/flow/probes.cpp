@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pressure probes: row averages and linear interpolation in y (probes.h).
 #include "flow/probes.h"
 

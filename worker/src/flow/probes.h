@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The quantity of interest (PHYSICS.md §7):
 //
 //   dp_star = [p̄(y1) − p̄(y2)] / (ρ_g U0²),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Nested iteration: the initial guess of a fine grid from the solution on a
 // coarser grid of the same domain (docs/SOLVER.md, "Nested start").
 //

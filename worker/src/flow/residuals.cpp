@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reference mass flux of the continuity residual (residuals.h).
 #include "flow/residuals.h"
 

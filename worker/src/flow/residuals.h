@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Normalized residuals of the outer iterations.
 //
 //   continuity  R_c = Σ_cells |net mass outflow − S_m V| / M_ref,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The SIMPLEC outer loop (simple_loop.h): a handful of named steps.
 #include "flow/simple_loop.h"
 

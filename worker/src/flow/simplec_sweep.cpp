@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One SIMPLEC sweep with the drag fixed (simplec_sweep.h).
 #include "flow/simplec_sweep.h"
 

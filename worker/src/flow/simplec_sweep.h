@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One SIMPLEC sweep x ↦ G(x) with the drag field held fixed: the momentum
 // predictor and the pressure correction of an outer iteration
 // (docs/SOLVER.md "Algorithm: SIMPLEC", steps 2–3). run_simple iterates it

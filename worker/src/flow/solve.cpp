@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The solve pipeline of one job (solve.h), with timing and memory figures.
 #include "flow/solve.h"
 

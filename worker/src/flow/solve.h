@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole frozen-bed solve of one job on one grid:
 //   1. grid from the case and numerics.grid
 //   2. particles (generator, file) or a uniform continuum bed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // solve_job: load the case's particles, summarise their structure, solve,
 // and stamp identity and version.
 #include <time.h>

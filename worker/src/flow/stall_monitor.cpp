@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stall test of the outer iterations (stall_monitor.h).
 #include "flow/stall_monitor.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether outer iterations have stalled: a limit cycle just above the
 // steady tolerance, which more iterations do not break. Always on the
 // coarse levels of the nested start, whose solution is a start, not a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Two-grid FAS cycles with SIMPLEC smoothing (two_grid_fas.h).
 #include "flow/two_grid_fas.h"
 

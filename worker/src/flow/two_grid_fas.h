@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Two-grid FAS (full approximation scheme) with SIMPLEC as the smoother: an
 // opt-in prototype (SimpleSettings::fas_smoothing_sweeps > 0; docs/SOLVER.md
 // "FAS prototype", docs/DESIGN.md "Outer convergence").

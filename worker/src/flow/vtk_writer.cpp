@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Legacy VTK writer (vtk_writer.h). Binary legacy VTK is big-endian float32.
 #include "flow/vtk_writer.h"
 

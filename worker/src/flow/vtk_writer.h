@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Final fields as a legacy VTK file (STRUCTURED_POINTS, binary, CELL_DATA),
 // which ParaView opens: eps_s, eps_g, p, beta and the gas velocity at cell
 // centres (mean of the two faces per component). Coordinates in cm.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Uniform Cartesian grid of the domain [0,Lx]x[0,Ly]x[0,Lz] (cm).
 //
 // Cells are indexed (i, j, k), x fastest: index = (k*ny + j)*nx + i.

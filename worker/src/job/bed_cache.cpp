@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Generated beds on disk (job/bed_cache.h).
 //
 // File layout, all on one host byte order (little-endian; a big-endian host

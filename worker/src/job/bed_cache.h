@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Generated beds kept on disk for the next job that needs the same bed
 // (docs/PARTICLES.md "Bed cache"). The jobs of one case differ in grid and
 // numerics only, and a large generated bed (the SSCP-like 93 000-particle

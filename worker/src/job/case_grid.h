@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The grid of a case: the domain L = L* d (cm) cut into `cells`, periodic
 // where the case's boundaries are.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // parse_case and its pieces (job/job_spec.h, job/case_parts.h): a case
 // object → CaseSpec, with the semantic checks the schema cannot express:
 // positive sizes, probes 0 < y1 < y2 < L_y*, particle files that exist,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pieces of a case object, parsed one at a time (used by parse_case and
 // by the `particles` command's spec, whose particle source sits at the top
 // level). Every reader takes the JSON pointer of its object and adds

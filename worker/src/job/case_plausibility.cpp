@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Physical plausibility of a case (job/case_plausibility.h).
 #include "job/case_plausibility.h"
 

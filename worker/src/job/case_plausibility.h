@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Physical plausibility of a case, checked before any work starts (by the
 // worker's parse_case and so by `gridfree validate` as well). The ranges are
 // wide on purpose: they refuse what cannot be a gas-solid CFD-DEM case or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // numerics.deposition (job/job_spec.h, docs/TRANSFER.md, docs/INTERFACE.md).
 //
 //   kind            "diffusion" (filtered, grid-independent) | "centroid" (grid-coupled, no filter)

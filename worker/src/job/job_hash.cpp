@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canonical JSON and the job hash (job/job_hash.h).
 //
 // canonical_json: objects with keys in byte order (nlohmann::json keeps

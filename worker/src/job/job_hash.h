@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job identity: SHA-256 of the canonical normalised job JSON + the solver
 // version.
 //

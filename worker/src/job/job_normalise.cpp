@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Defaults filled into a job document (job/job_normalise.h). The values are
 // the parsers' own defaults (the spec structs' initialisers), so the
 // normalised document and what the solver computes cannot drift apart;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The normalised job document: what a job's identity (job/job_hash.h) is
 // computed from. Every optional field left out is written with its default
 // (docs/INTERFACE.md §2, the "default" of schemas/job.schema.json), so a job

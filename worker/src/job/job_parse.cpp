@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // parse_numerics and parse_job (job/job_spec.h): schema validation first
 // (schemas/job.schema.json, every problem with its JSON pointer), then the
 // semantic checks, all collected into one InputError (each problem once,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A worker job (docs/INTERFACE.md §2, schemas/job.schema.json) as typed values.
 //
 // parse_job() validates a JSON document against the embedded schema and the

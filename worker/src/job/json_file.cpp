@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // read_json_file: a JSON document from disk within the limits of
 // core/json_limits.h (size, nesting depth, number range); malformed input is
 // reported as "file:line:col: what is wrong".

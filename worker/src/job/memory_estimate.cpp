@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The worker's memory guard (job/memory_estimate.h).
 #include "job/memory_estimate.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The worker's own memory guard: an estimate of a job's peak memory from its
 // cell count, checked against a limit before anything is allocated, so that
 // no job allocates its way into the kernel's OOM killer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "job/particles_spec.h"
 
 #include "core/json_fields.h"

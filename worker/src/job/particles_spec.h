@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The input of `gridfree-worker particles` (docs/INTERFACE.md §2,
 // schemas/particles.schema.json): a domain and particle diameter plus a
 // generator, or a file to convert, optionally boundaries and thermal

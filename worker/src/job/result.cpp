@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The result document (docs/INTERFACE.md §2, schemas/result.schema.json).
 #include "job/result.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The worker's result document (docs/INTERFACE.md §2, schemas/result.schema.json).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Identity of an external solver's template folder (docs/EXTERNAL.md).
 //
 // template_sha256(dir) is the SHA-256 (hex) of the folder's regular files,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Aggregation coarsening of a 7-point system (additive correction,
 // Hutchinson & Raithby 1986): the fine cells are grouped into boxes of
 // 2 (or 3 at an odd end) cells along each coarsened axis, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // BiCGSTAB (van der Vorst 1992) with right preconditioning for general
 // (non-symmetric) 7-point systems such as the momentum equations:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Preconditioned conjugate gradients for a symmetric positive (semi)definite
 // 7-point system A φ = b (Hestenes–Stiefel, with z = M⁻¹ r):
 //

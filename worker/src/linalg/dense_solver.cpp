@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "linalg/dense_solver.h"
 
 #include <Eigen/Dense>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact solve of a small 7-point system on the coarsest multigrid level:
 // the stencil is assembled into a dense matrix and factored once with
 // Eigen's LDLᵀ (symmetric, pivoted). For a singular system (A·1 = 0) the

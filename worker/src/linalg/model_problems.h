@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Model 7-point systems for the solver tests and benchmarks, built the way
 // the flow solver and the filter build theirs (finite volumes on a Grid):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Aggregation multigrid V-cycle used as a preconditioner for conjugate
 // gradients (additive-correction multigrid, Hutchinson & Raithby 1986):
 //

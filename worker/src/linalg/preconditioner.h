@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Preconditioners z = M⁻¹ r for the Krylov solvers on a 7-point stencil.
 //
 //   Jacobi:        z_P = r_P / a_P

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "linalg/smoother.h"
 
 #include "linalg/stencil_ops.h"

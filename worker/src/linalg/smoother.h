@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Red-black Gauss–Seidel smoothing of A x = rhs on a 7-point stencil:
 //
 //   x_P ← (rhs_P + Σ_nb a_nb x_nb) / a_P     for every cell of one colour,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A 7-point finite-volume system on the cell grid of a Grid:
 //
 //   a_P φ_P = a_W φ_W + a_E φ_E + a_S φ_S + a_N φ_N + a_B φ_B + a_T φ_T + b_P

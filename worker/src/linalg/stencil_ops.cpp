@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "linalg/stencil_ops.h"
 #include "linalg/parallel_threshold.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Basic operations on a 7-point finite-volume system (stencil.h):
 //
 //   (A φ)_P = a_P φ_P − Σ_nb a_nb φ_nb          (matrix–vector product)

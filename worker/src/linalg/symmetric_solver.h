@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Solver for symmetric positive (semi)definite 7-point systems — the
 // pressure correction and the diffusion filter: preconditioned conjugate
 // gradients (conjugate_gradient.h) with an aggregation-multigrid V-cycle

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Vector kernels for the Krylov solvers, OpenMP-parallel and deterministic.
 //
 // Reductions (dot products, norms, sums) are fixed-order: the vector is cut

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Structure statistics of a bed of spheres (docs/PARTICLES.md "Structure"):
 // whether it is a lattice or a random packing, and how ε_s varies.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bed summary of a job's result (see bed_summary.h).
 #include "particles/bed_summary.h"
 

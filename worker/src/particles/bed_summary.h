@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The compact summary of a bed's structure that a job's result carries
 // (docs/INTERFACE.md §2 "bed", docs/PARTICLES.md "Structure"), made from
 // bed_structure(): what the study report's "About this case" shows per case.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fictitious bursting bubble of Fullmer & Musser (2018) §3, as this
 // project reconstructs it (PHYSICS.md §6). In particle diameters (d = the
 // case's particle diameter, domain from the case):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A hashing grid ("cell list") for neighbour queries among particles in a box
 // with optional periodic axes, so overlap checks cost O(1) per particle and
 // O(N) in all.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sanity checks of a loaded configuration against its case: every centre in
 // the domain, no two particles overlapping beyond a tolerance (minimum image
 // on periodic axes, cell list with bins ≥ the largest diameter). Time is

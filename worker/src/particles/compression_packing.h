@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A random dense packing of equal spheres by compression: growing
 // diameters with overlap-energy minimisation, the soft-sphere jamming
 // protocol (O'Hern, Silbert, Liu & Nagel, Phys. Rev. E 68, 011306, 2003;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CSV particle files: x,y,z,d[,u,v,w] (particles/particle_io.h).
 #include <array>
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A random dense packing of equal spheres (ε_s up to ≈ 0.62) by overlap
 // removal with growing diameters, the "collective rearrangement" family of
 // jamming protocols (Jodrey & Tory, Phys. Rev. A 32, 2347, 1985; Clarke &

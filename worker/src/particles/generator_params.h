@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Typed parameters of each generator kind, read from the generator object
 // (schemas/job.schema.json, definitions/generator), and the kind-specific
 // generators behind generate_particles (particles/generators.h).

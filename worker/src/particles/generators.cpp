@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dispatch by generator kind, the parameter readers and their checks
 // against the case (particles/generator_params.h).
 #include "particles/generators.h"

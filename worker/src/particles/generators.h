@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seeded particle configurations (PHYSICS.md §6, docs/PARTICLES.md).
 //
 //   bursting_bubble  the paper's fictitious bursting bubble: ε_s = 0.30 for

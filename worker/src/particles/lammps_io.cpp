@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // LAMMPS / LIGGGHTS text dump files (particles/particle_io.h).
 //
 // A dump holds one or more snapshots, each

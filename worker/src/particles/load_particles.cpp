@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A case's particles from its source (generator, file or uniform bed).
 #include <cmath>
 #include <cstdio>

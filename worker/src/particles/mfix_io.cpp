@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MFiX particle_input.dat, versions 1 and 2.0 (particles/particle_io.h).
 #include <algorithm>
 #include <cctype>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The dense packing's bins (particles/dense_packing.h): the particles of
 // each bin of a CellList's geometry, id and a copy of the centre, stored
 // flat, over the box of bins lo..hi (per axis, inclusive) that the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A frozen particle: centre (cm), diameter (cm), velocity (cm/s).
 #pragma once
 

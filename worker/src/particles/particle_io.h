@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Particle files, their checks, and loading a case's particles.
 //
 // CSV: a header naming the columns x,y,z,d (cm) and optionally u,v,w

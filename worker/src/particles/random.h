@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Portable random numbers for particle generation.
 //
 // std::uniform_real_distribution and std::normal_distribution are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/sphere_packer.h"
 
 #include <algorithm>

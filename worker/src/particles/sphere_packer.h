@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Non-overlapping placement of equal spheres in a box (the machinery behind
 // the generators): a cell list for O(1) overlap tests, centre bounds that
 // keep spheres off non-periodic walls, and random sequential addition (RSA).

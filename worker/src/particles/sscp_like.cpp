@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A bubbling-bed-like snapshot (the SSCP-I-like case, PHYSICS.md §6): a
 // packed emulsion at ε_s ≈ 0.55–0.6 with a few bubbles at ε_s ≈ 0.01.
 // Random sequential addition jams near 0.38, so the emulsion is built as

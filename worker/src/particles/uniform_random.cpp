@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A uniform random bed: ε_s = solids_fraction in a box (default: the whole
 // domain), N = round(ε_s · V_box / V_p) equal spheres placed by random
 // sequential addition with centres uniform in the box (and off the

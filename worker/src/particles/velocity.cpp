@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Random particle velocities: u, v, w ~ N(0, σ²) per particle, σ = thermal_cm_s.
 #include "particles/generators.h"
 #include "particles/random.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TVD flux limiters ψ(r) and the limited face value (PHYSICS.md §5):
 //
 //   r   = (φ_C − φ_U)/(φ_D − φ_C),   C the upwind cell of the face,

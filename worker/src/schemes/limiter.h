@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TVD flux limiters ψ(r) (PHYSICS.md §5), as pure functions.
 //
 // r = (φ_C − φ_U)/(φ_D − φ_C), C the upwind cell; the face value is

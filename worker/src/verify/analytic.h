@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Smooth analytic fields and their derivatives, for manufactured solutions.
 //
 // Derivatives are taken by 6th-order central differences of the analytic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Order of accuracy of the diffusion filter (PHYSICS.md §3.2).
 //
 // A smooth periodic field α0 = 1 + ½ sin(kx) + ⅓ cos(2ky) (k = 2π, box [0,1]²,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Manufactured solution of the steady Model A gas equations (PHYSICS.md §1)
 // with a frozen, prescribed gas fraction and drag field in a periodic box:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Observed order of accuracy from errors on a sequence of refined grids
 // (MFEM-style: halve the cell size, order = log(e_coarse/e_fine)/log(h_c/h_f)).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every (study, grid) pair is an independent problem: they run concurrently
 // on the OpenMP threads, largest grids first (they dominate the time), each
 // problem on one thread (the solvers' own parallel loops are nested and so

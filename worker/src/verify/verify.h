@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Code verification by the method of manufactured solutions: what
 // `gridfree-worker verify` runs (docs/INTERFACE.md §2).
 //

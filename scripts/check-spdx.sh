@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Lists every tracked source file that lacks an SPDX-License-Identifier line in
+# its first three lines; exits 1 if there is one. `--add` inserts the line
+# (after a shebang) instead. Source: C++ (.cpp .h .cpp.in), shell, Python,
+# CMake, Makefiles and LAMMPS inputs; data, documents and OpenFOAM case
+# dictionaries are not source (THIRD_PARTY.md says what they are under).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+spdx="SPDX-License-Identifier: GPL-3.0-or-later"
+mode="${1:-check}"
+missing=0
+while IFS= read -r f; do
+  case "$f" in
+    *.cpp|*.h|*.cpp.in|*.hpp) comment="//" ;;
+    *.sh|*.py|*.cmake|*/CMakeLists.txt|CMakeLists.txt|Makefile|*.in|.ci/*) comment="#" ;;
+    *) continue ;;
+  esac
+  if head -n 3 "$f" | grep -q "SPDX-License-Identifier:"; then continue; fi
+  if [[ "$mode" == "--add" ]]; then
+    if head -n 1 "$f" | grep -q '^#!'; then
+      sed -i "1a $comment $spdx" "$f"
+    else
+      sed -i "1i $comment $spdx" "$f"
+    fi
+  else
+    echo "no SPDX line: $f"
+    missing=1
+  fi
+done < <(git ls-files)
+exit $missing
