@@ -7,6 +7,8 @@
 # dictionaries are not source (THIRD_PARTY.md says what they are under).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Outside a git checkout there is no list of tracked files to check: say so.
+git rev-parse --is-inside-work-tree >/dev/null || { echo "check-spdx: not a git checkout" >&2; exit 2; }
 spdx="SPDX-License-Identifier: GPL-3.0-or-later"
 mode="${1:-check}"
 missing=0
