@@ -3,10 +3,10 @@
 
 namespace gridfree {
 
-std::string version_string() { return program_version_string("gridfree"); }
+std::string version_string() { return std::string("gridfree ") + project_version() + " (" + source_revision() + ")"; }
 
 std::string program_version_string(const std::string& program) {
-  return program + " " + project_version() + " (" + source_revision() + ")";
+  return program + " " + project_version() + " (commit " + source_revision() + ", " + build_type() + " build)";
 }
 
 }  // namespace gridfree
