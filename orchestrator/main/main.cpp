@@ -11,7 +11,9 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "cli_docs.h"
 #include "commands.h"
+#include "clidoc/doc_request.h"
 #include "core/command_suggestion.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
@@ -50,6 +52,8 @@ int main(int argc, char** argv) {
     const CLI::App* sub = app.get_subcommand(*help_topic);
     std::cout << app.get_formatter()->make_help(sub, app.get_name() + " " + sub->get_name(), CLI::AppFormatMode::Normal);
   });
+  // `--man-page` / `--bash-completion`: the build writes the installed docs from this definition.
+  if (int code = 0; cli_docs_requested(app, argc, argv, cli::gridfree_man_page_info(), std::cout, std::cerr, code)) return code;
   // A mistyped command: name it and the nearest known one (exit 2).
   if (report_unknown_command(app, argc, argv)) return to_int(ExitCode::kInvalidInput);
 
