@@ -11,7 +11,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS = fuzz_json_text fuzz_job fuzz_study fuzz_series fuzz_particle_files fuzz_result
 
-.PHONY: all deps test-deps configure configure-app build build-app test test-unit test-sanitize fuzz demo bench bench-quick clean
+.PHONY: all deps test-deps configure configure-app build build-app test test-unit test-sanitize fuzz demo bench bench-quick clean install
 
 all: build
 
@@ -81,6 +81,17 @@ demo: build-app
 	@$(BUILD)/bin/gridfree run studies/quickstart.json --db gridfree.sqlite; status=$$?; \
 	  echo "Report: $(CURDIR)/reports/quickstart/report.html (and report.md)"; \
 	  echo "Database: $(CURDIR)/gridfree.sqlite"; exit $$status
+
+# `make install PREFIX=P`: the executables, studies, documents, man pages,
+# completion and Lmod module file under P (docs/INSTALL.md). Needs no root
+# when P is writable, and installs no package: an unconfigured $(BUILD) is
+# configured with what CMake finds (CMAKE_PREFIX_PATH, pkg-config).
+PREFIX ?= /usr/local
+install:
+	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) \
+	  -DGRIDFREE_BUILD_TESTS=OFF -DGRIDFREE_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target gridfree gridfree-worker cli_docs
+	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 bench: build
 	@bench/run.sh $(BUILD)/bin

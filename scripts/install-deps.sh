@@ -19,9 +19,12 @@ packages=(
 # PDF; a single-node Slurm (munge, slurmctld, slurmd, started by
 # tests/integration/slurm/slurm_cluster.sh) runs the Slurm executor tests;
 # openfoam (Debian's OpenFOAM v1912, about 40 s and 500 MB) runs the external
-# solver tests (tests/integration/external), which fail without it.
+# solver tests (tests/integration/external), which fail without it; man-db
+# and lmod render the installed man pages and load the module file
+# (tests/install/).
 if [[ "${1:-}" == "test" ]]; then
-  packages+=(libgtest-dev chromium poppler-utils munge slurmctld slurmd slurm-client openfoam)
+  packages+=(libgtest-dev chromium poppler-utils munge slurmctld slurmd slurm-client openfoam
+             man-db lmod)
 fi
 # `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
 if [[ "${1:-}" == "fuzz" ]]; then
