@@ -11,7 +11,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS = fuzz_json_text fuzz_job fuzz_study fuzz_series fuzz_particle_files fuzz_result
 
-.PHONY: all deps test-deps configure configure-app build build-app test test-unit test-sanitize fuzz demo bench bench-quick clean install
+.PHONY: all deps test-deps configure configure-app build build-app test test-unit test-sanitize fuzz demo bench bench-quick clean install deb
 
 all: build
 
@@ -92,6 +92,11 @@ install:
 	  -DGRIDFREE_BUILD_TESTS=OFF -DGRIDFREE_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target gridfree gridfree-worker cli_docs
 	@cmake --install $(BUILD) --prefix $(PREFIX)
+
+# `make deb`: $(BUILD)/gridfree_<version>_<arch>.deb (cmake/Packaging.cmake).
+deb: configure-app
+	@cmake --build $(BUILD) -j $(JOBS) --target gridfree gridfree-worker cli_docs
+	@cd $(BUILD) && cpack -G DEB
 
 bench: build
 	@bench/run.sh $(BUILD)/bin

@@ -21,10 +21,11 @@ packages=(
 # openfoam (Debian's OpenFOAM v1912, about 40 s and 500 MB) runs the external
 # solver tests (tests/integration/external), which fail without it; man-db
 # and lmod render the installed man pages and load the module file
-# (tests/install/).
+# (tests/install/), dpkg-dev and file let CPack compute the Debian
+# package's Depends (scripts/check-deb.sh).
 if [[ "${1:-}" == "test" ]]; then
   packages+=(libgtest-dev chromium poppler-utils munge slurmctld slurmd slurm-client openfoam
-             man-db lmod)
+             man-db lmod dpkg-dev file)
 fi
 # `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
 if [[ "${1:-}" == "fuzz" ]]; then
