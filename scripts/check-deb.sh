@@ -10,7 +10,8 @@
 set -euo pipefail
 build="$(cd "${1:?usage: check-deb.sh BUILD_DIR}" && pwd)"
 export DEBIAN_FRONTEND=noninteractive
-if dpkg-query -W -f='${Status}' gridfree 2>/dev/null | grep -q "install ok installed"; then
+status=$(dpkg-query -W -f='${Status}' gridfree 2>/dev/null || true)
+if [[ "$status" == "install ok installed" ]]; then
   echo "check-deb: a gridfree package is already installed; remove it first" >&2
   exit 1
 fi
@@ -30,7 +31,8 @@ env -u GRIDFREE_WORKER gridfree run /usr/share/gridfree/studies/quickstart.json 
   { tail -20 run.log; echo "check-deb: the demo from the package failed"; exit 1; }
 test -s reports/quickstart/report.html
 echo "demo from the package: $(($(date +%s) - start)) s, report written"
-MANPAGER=cat man gridfree | grep -q "gridfree run STUDY" || { echo "check-deb: man gridfree"; exit 1; }
+page=$(MANPAGER=cat man gridfree)  # read whole: grep -q in a pipe would SIGPIPE man under pipefail
+grep -q "gridfree run STUDY" <<<"$page" || { echo "check-deb: man gridfree"; exit 1; }
 reply=$(bash -c 'source /usr/share/bash-completion/completions/gridfree; COMP_WORDS=(gridfree st); COMP_CWORD=1; _gridfree; echo "${COMPREPLY[*]}"')
 [[ "$reply" == "status" ]] || { echo "check-deb: completion of 'gridfree st' gave '$reply'"; exit 1; }
 echo "check-deb: ok"

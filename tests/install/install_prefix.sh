@@ -34,7 +34,10 @@ user_env=(env -u GRIDFREE_WORKER "PATH=$prefix/bin:/usr/bin:/bin")
 elsewhere="$work/elsewhere"
 mkdir -p "$elsewhere"
 cd "$elsewhere"
-"${user_env[@]}" gridfree --version | grep -q "^gridfree $version (commit " || fail "gridfree --version"
+# (Output is read whole before grep -q: with pipefail, grep -q leaving a pipe
+# early would fail the writer with SIGPIPE.)
+out=$("${user_env[@]}" gridfree --version)
+grep -q "^gridfree $version (commit " <<<"$out" || fail "gridfree --version: $out"
 
 studies="$prefix/share/gridfree/studies"
 python3 - "$studies/quickstart.json" >install_demo.json <<'PY'
@@ -66,7 +69,8 @@ done
 page=$(MANPAGER=cat MANWIDTH=100 man -l "$prefix/share/man/man1/gridfree.1")
 grep -q -- "--memory-budget" <<<"$page" || fail "gridfree.1 lacks run's --memory-budget"
 grep -q "gridfree run STUDY" <<<"$page" || fail "gridfree.1 lacks the run command"
-MANPATH="$prefix/share/man" MANPAGER=cat man gridfree-worker | grep -q -- "--threads" || fail "man gridfree-worker via MANPATH"
+page=$(MANPATH="$prefix/share/man" MANPAGER=cat man gridfree-worker)
+grep -q -- "--threads" <<<"$page" || fail "man gridfree-worker via MANPATH"
 echo "man pages: ok"
 
 # Completion, as bash calls it: COMP_WORDS / COMP_CWORD, then COMPREPLY.
@@ -74,11 +78,14 @@ complete_words() {  # program word... (the last word is the one completed)
   bash -c 'source "$1"; shift; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); _${1//-/_}; printf "%s\n" "${COMPREPLY[@]}"' \
     _ "$prefix/share/bash-completion/completions/$1" "$@"
 }
-complete_words gridfree "" | grep -qx run || fail "completion: gridfree <TAB> lacks run"
-complete_words gridfree "" | grep -qx status || fail "completion: gridfree <TAB> lacks status"
+words=$(complete_words gridfree "")
+grep -qx run <<<"$words" || fail "completion: gridfree <TAB> lacks run"
+grep -qx status <<<"$words" || fail "completion: gridfree <TAB> lacks status"
 [[ "$(complete_words gridfree st)" == $'status' ]] || fail "completion: gridfree st<TAB> is not status"
-complete_words gridfree run --mem | grep -qx -- --memory-budget || fail "completion: run --mem<TAB>"
+words=$(complete_words gridfree run --mem)
+grep -qx -- --memory-budget <<<"$words" || fail "completion: run --mem<TAB>"
 [[ "$(complete_words gridfree run --executor "" | sort | tr '\n' ' ')" == "local slurm " ]] ||
   fail "completion: run --executor <TAB> is not 'local slurm'"
-complete_words gridfree-worker "" | grep -qx solve || fail "completion: gridfree-worker <TAB> lacks solve"
+words=$(complete_words gridfree-worker "")
+grep -qx solve <<<"$words" || fail "completion: gridfree-worker <TAB> lacks solve"
 echo "bash completion: ok"
