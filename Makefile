@@ -93,9 +93,13 @@ install:
 	@cmake --build $(BUILD) -j $(JOBS) --target gridfree gridfree-worker cli_docs
 	@cmake --install $(BUILD) --prefix $(PREFIX)
 
-# `make deb`: $(BUILD)/gridfree_<version>_<arch>.deb (cmake/Packaging.cmake).
-deb: configure-app
-	@cmake --build $(BUILD) -j $(JOBS) --target gridfree gridfree-worker cli_docs
+# `make deb`: $(BUILD)/gridfree_<version>_<arch>.deb (cmake/Packaging.cmake),
+# from $(BUILD) as it is configured (else configured without tests); CPack
+# builds whatever that build tree builds before packaging.
+deb:
+	@scripts/install-deps.sh deb
+	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) \
+	  -DGRIDFREE_BUILD_TESTS=OFF -DGRIDFREE_BUILD_BENCH=OFF >/dev/null
 	@cd $(BUILD) && cpack -G DEB
 
 bench: build

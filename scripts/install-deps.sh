@@ -4,6 +4,7 @@
 #   scripts/install-deps.sh        build and run (what `make demo` needs)
 #   scripts/install-deps.sh test   also what the tests use (`make test`)
 #   scripts/install-deps.sh fuzz   also clang for the fuzz targets
+#   scripts/install-deps.sh deb    also what CPack needs to build the Debian package (`make deb`)
 # Idempotent: only missing packages are installed (needs root for that).
 set -euo pipefail
 
@@ -26,6 +27,11 @@ packages=(
 if [[ "${1:-}" == "test" ]]; then
   packages+=(libgtest-dev chromium poppler-utils munge slurmctld slurmd slurm-client openfoam
              man-db lmod dpkg-dev file)
+fi
+# `install-deps.sh deb`: dpkg-shlibdeps (dpkg-dev) and file compute the
+# package's Depends (cmake/Packaging.cmake).
+if [[ "${1:-}" == "deb" ]]; then
+  packages+=(dpkg-dev file)
 fi
 # `install-deps.sh fuzz`: clang with libFuzzer and OpenMP for `make fuzz`.
 if [[ "${1:-}" == "fuzz" ]]; then
