@@ -42,7 +42,8 @@ class Gridfree(CMakePackage):
     depends_on("fmt")
     depends_on("cli11@2:")
     depends_on("fftw@3 precision=double")
-    depends_on("googletest", type="test", when="+tests")
+    # Found at configure time when the tests are built, so a build dependency.
+    depends_on("googletest", type="build", when="+tests")
 
     # C++20 and OpenMP; built and tested with GCC 12.
     conflicts("%gcc@:10", msg="gridfree is C++20 (built and tested with GCC 12)")
