@@ -24,6 +24,8 @@ namespace {
 struct ToyCli {
   CLI::App app{"toy: a program to test the generators"};
   std::string study, db = "toy.sqlite", executor = "local", secret;
+  std::vector<double> range{0.5, 2.0};
+  std::vector<std::string> tags;
   int jobs = 0;
   bool verbose = false, hidden_flag = false;
   ToyCli() {
@@ -34,6 +36,8 @@ struct ToyCli {
     run->add_option("--db", db, "SQLite database")->capture_default_str();
     run->add_option("-j,--jobs", jobs, "jobs at a time");
     run->add_option("--executor", executor, "where jobs run")->check(CLI::IsMember({"local", "slurm"}));
+    run->add_option("--range", range, "lo hi")->expected(2);
+    run->add_option("--tag", tags, "repeatable");
     app.add_subcommand("status", "show studies");
     app.add_subcommand("secret", "not shown")->group("")->add_option("--key", secret, "k");
   }
@@ -75,6 +79,13 @@ TEST(CliTree, ReadsCommandsOptionsPositionalsAndChoicesButNotHiddenOnes) {
   const CliOption* executor = find_option(run, "--executor");
   ASSERT_NE(executor, nullptr);
   EXPECT_EQ(executor->choices, (std::vector<std::string>{"local", "slurm"}));
+  // The number of values, as CLI11's help prints it.
+  const CliOption* range = find_option(run, "--range");
+  ASSERT_NE(range, nullptr);
+  EXPECT_EQ(range->value, "FLOAT x 2");
+  const CliOption* tag = find_option(run, "--tag");
+  ASSERT_NE(tag, nullptr);
+  EXPECT_EQ(tag->value, "TEXT ...");
 }
 
 TEST(ManPage, RoffEscapesHyphensBackslashesAndControlLines) {
@@ -117,11 +128,11 @@ TEST(BashCompletion, CompletesCommandsOptionsAndChoices) {
   EXPECT_NE(script.find("_toy() {"), std::string::npos) << script;
   EXPECT_NE(script.find("compgen -W \"run status\""), std::string::npos) << script;
   EXPECT_NE(script.find("opts=\"-h --help -v --verbose\""), std::string::npos) << script;
-  EXPECT_NE(script.find("opts=\"-h --help --db -j --jobs --executor\""), std::string::npos) << script;
+  EXPECT_NE(script.find("opts=\"-h --help --db -j --jobs --executor --range --tag\""), std::string::npos) << script;
   EXPECT_NE(script.find("--executor) COMPREPLY=($(compgen -W \"local slurm\" -- \"$cur\")); return ;;"),
             std::string::npos)
       << script;
-  EXPECT_NE(script.find("--db|-j|--jobs) return ;;"), std::string::npos) << "value options fall back to files";
+  EXPECT_NE(script.find("--db|-j|--jobs|--range|--tag) return ;;"), std::string::npos) << "value options fall back to files";
   EXPECT_NE(script.find("complete -o default -F _toy toy\n"), std::string::npos) << script;
   EXPECT_EQ(script.find("secret"), std::string::npos);
   // A hyphen in the program's name is not one in the function's.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "clidoc/cli_tree.h"
 
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace gridfree {
@@ -34,6 +36,13 @@ CliOption read_option(const CLI::Option& opt) {
   if (opt.get_type_size() != 0) {
     o.value = opt.get_option_text().empty() ? opt.get_type_name() : opt.get_option_text();
     o.choices = choices_of(o.value);
+    // How many values, as CLI11's own help says it: "FLOAT x 2", "TEXT ...".
+    if (opt.get_option_text().empty()) {
+      if (opt.get_expected_max() == CLI::detail::expected_max_vector_size)
+        o.value += " ...";
+      else if (opt.get_expected_min() > 1)
+        o.value += " x " + std::to_string(opt.get_expected_min());
+    }
     o.default_value = opt.get_default_str();
   }
   o.description = opt.get_description();

@@ -16,7 +16,7 @@ namespace gridfree {
 
 struct CliOption {
   std::vector<std::string> names;  // "-j", "--jobs" (short names first)
-  std::string value;               // "INT", "TEXT:{local,slurm}"; "" for a flag
+  std::string value;               // "INT", "TEXT:{local,slurm}", "FLOAT x 2", "TEXT ..."; "" for a flag
   std::vector<std::string> choices;  // the {a,b} of value, if any
   std::string default_value;       // shown default, or ""
   std::string description;
