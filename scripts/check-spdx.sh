@@ -8,6 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Outside a git checkout there is no list of tracked files to check: say so.
+# A checkout owned by another user (a CI clone) is read all the same.
+git() { command git -c safe.directory="$PWD" "$@"; }
 git rev-parse --is-inside-work-tree >/dev/null || { echo "check-spdx: not a git checkout" >&2; exit 2; }
 spdx="SPDX-License-Identifier: GPL-3.0-or-later"
 mode="${1:-check}"
