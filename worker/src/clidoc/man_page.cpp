@@ -68,7 +68,10 @@ std::string man_page(const CliCommand& tree, const ManPageInfo& info) {
   if (!tree.commands.empty()) out << " \\fICOMMAND\\fR [\\fIARGUMENTS\\fR] [\\fIOPTIONS\\fR]";
   for (const auto& p : tree.positionals) out << " " << positional_synopsis(p);
   out << "\n";
-  out << ".SH DESCRIPTION\n" << roff_escape(tree.description) << "\n";
+  out << ".SH DESCRIPTION\n";
+  if (info.description.empty()) out << roff_escape(tree.description) << "\n";
+  for (std::size_t i = 0; i < info.description.size(); ++i)
+    out << (i ? ".PP\n" : "") << roff_escape(info.description[i]) << "\n";
   if (!tree.commands.empty())
     out << ".PP\n\\fB" << prog << " \\fICOMMAND\\fB \\-\\-help\\fR prints the help of one command.\n";
   out << ".SH OPTIONS\n";

@@ -15,6 +15,7 @@ namespace gridfree {
 struct ManPageInfo {
   std::string program;  // "gridfree"
   std::string version;  // "0.2.0"
+  std::vector<std::string> description;  // DESCRIPTION paragraphs (default: the App's description)
   std::vector<std::pair<int, std::string>> exit_codes;        // code, meaning
   std::vector<std::pair<std::string, std::string>> environment;  // variable, meaning
   std::vector<std::string> see_also;                         // "gridfree-worker(1)"
