@@ -7,6 +7,13 @@
 #   P/share/bash-completion/completions/gridfree{,-worker}
 #   P/share/modulefiles/gridfree/<version>.lua  (Lmod; finds P from its own path)
 include(GNUInstallDirs)
+# Libraries found outside the system's directories (a user prefix, Spack, a
+# module) are recorded in the installed executables' RPATH, so the worker
+# still finds them where their module is not loaded, as in a Slurm job.
+# System libraries (the Debian package's) add nothing.
+if(NOT DEFINED CMAKE_INSTALL_RPATH_USE_LINK_PATH)
+  set(CMAKE_INSTALL_RPATH_USE_LINK_PATH ON)
+endif()
 
 install(TARGETS gridfree gridfree-worker RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # Study files resolve their relative paths (templates, particle files)
