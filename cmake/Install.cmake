@@ -10,9 +10,11 @@ include(GNUInstallDirs)
 # Libraries found outside the system's directories (a user prefix, Spack, a
 # module) are recorded in the installed executables' RPATH, so the worker
 # still finds them where their module is not loaded, as in a Slurm job.
-# System libraries (the Debian package's) add nothing.
-if(NOT DEFINED CMAKE_INSTALL_RPATH_USE_LINK_PATH)
-  set(CMAKE_INSTALL_RPATH_USE_LINK_PATH ON)
+# System libraries (the Debian package's) add nothing. A target property:
+# the executables exist already; -DCMAKE_INSTALL_RPATH_USE_LINK_PATH=OFF
+# keeps the CMake default.
+if(NOT DEFINED CMAKE_INSTALL_RPATH_USE_LINK_PATH OR CMAKE_INSTALL_RPATH_USE_LINK_PATH)
+  set_target_properties(gridfree gridfree-worker PROPERTIES INSTALL_RPATH_USE_LINK_PATH ON)
 endif()
 
 install(TARGETS gridfree gridfree-worker RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
