@@ -124,8 +124,8 @@ int run_study(const RunOptions& ro) {
   const SchedulerSummary sum = run_scheduler(store, *executor, options, adopted);
   progress.finish();
   if (const auto fatal = executor->fatal_error())
-    throw InputError("--executor", *fatal + "; nothing more was submitted, the study's jobs are queued again (no "
-                                            "attempt spent): fix the cause and run again");
+    throw InputError("--executor", *fatal + "; nothing more was submitted, the study's jobs are queued again: fix "
+                                            "the cause and run again");
   // 4. Report and exit code.
   // Written once: the scheduler's write after the last job stands unless
   // something changed since (sched/scheduler.h, reports_current). After a
@@ -238,7 +238,7 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
       spdlog::info("daemon: stopped; {} job(s) finished this session", sum.finished);
     if (sum.reports_failed > 0) spdlog::error("daemon: {} report(s) could not be written", sum.reports_failed);
     if (const auto fatal = executor->fatal_error())
-      throw InputError("--executor", *fatal + "; the jobs in flight are queued again (no attempt spent)");
+      throw InputError("--executor", *fatal + "; the jobs in flight are queued again");
     exit_code = to_int(sum.reports_failed > 0 ? ExitCode::kInternalError : ExitCode::kOk);
   });
 }
