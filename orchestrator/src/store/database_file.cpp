@@ -2,6 +2,7 @@
 // Problems with the file a --db names (store/database_file.h).
 #include "store/database_file.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <fstream>

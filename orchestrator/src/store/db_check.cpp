@@ -54,7 +54,16 @@ void check_sqlite_integrity(Database& db, std::vector<std::string>& problems) {
           problems);
 }
 
-void check_gridfree_invariants(Database& db, std::vector<std::string>& problems) {
+// Where a job's run folder is beside a database that moved with its runs
+// folder (exec/executor.h runs_root_for, run_dir_for: sharded or flat).
+bool run_folder_beside(const fs::path& db_file, const std::string& hash) {
+  std::error_code ec;
+  const auto abs = fs::absolute(db_file, ec);
+  const auto root = abs.parent_path() / (abs.filename().string() + ".runs");
+  return (hash.size() > 2 && fs::is_directory(root / hash.substr(0, 2) / hash, ec)) || fs::is_directory(root / hash, ec);
+}
+
+void check_gridfree_invariants(Database& db, const fs::path& db_file, std::vector<std::string>& problems) {
   collect_problems(db,
           "SELECT j.id, j.job_hash, COALESCE(r.status, '') FROM jobs j LEFT JOIN results r ON r.job_id = j.id "
           "WHERE j.status = 'done' AND (r.job_id IS NULL OR r.status <> 'converged') ORDER BY j.id",
@@ -97,7 +106,7 @@ void check_gridfree_invariants(Database& db, std::vector<std::string>& problems)
   while (st.step()) {
     const fs::path folder = fs::path(st.as_text(2)).parent_path();
     std::error_code ec;
-    if (fs::is_directory(folder, ec)) continue;
+    if (fs::is_directory(folder, ec) || run_folder_beside(db_file, st.as_text(1))) continue;
     if (++missing <= kDbCheckMaxListed)
       problems.push_back(job_label(st) + " is done but its run folder " + folder.string() + " does not exist");
   }
@@ -121,7 +130,7 @@ DbCheckReport check_database(const fs::path& file) {
       out.problems.push_back("schema version 0: no gridfree tables (an empty SQLite database)");
       return out;
     }
-    check_gridfree_invariants(db, out.problems);
+    check_gridfree_invariants(db, file, out.problems);
     out.studies = count_rows(db, "SELECT COUNT(*) FROM studies");
     out.jobs = count_rows(db, "SELECT COUNT(*) FROM jobs");
     out.results = count_rows(db, "SELECT COUNT(*) FROM results");

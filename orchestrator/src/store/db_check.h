@@ -10,7 +10,9 @@
 //      - every series has jobs, and each job link (study_jobs) belongs to
 //        the study its series belongs to;
 //      - no series is done while one of its jobs is queued or running;
-//      - the run folder of every done job that recorded one exists.
+//      - the run folder of every done job that recorded one exists (where
+//        it recorded it, or in <db>.runs beside a database that moved with
+//        its runs folder).
 // A file SQLite cannot read at all is one problem naming SQLite's words.
 #pragma once
 

@@ -72,6 +72,20 @@ TEST(DbCommands, CheckPassesWhatARunWrote) {
   EXPECT_NE(r.out.find("sound (schema version 12; 1 studies, 3 jobs, 3 results)"), std::string::npos) << r.out;
 }
 
+// result_path is absolute; a database moved together with its runs folder
+// finds the run folders beside it.
+TEST(DbCommands, ADatabaseMovedWithItsRunsFolderIsSound) {
+  const auto dir = ts::fresh_scratch_dir("db_cli", "moved");
+  checked_run(dir);
+  fs::create_directories(dir / "moved");
+  fs::rename(dir / "g.sqlite", dir / "moved/g.sqlite");
+  fs::rename(dir / "g.sqlite.runs", dir / "moved/g.sqlite.runs");
+  const auto r = ts::gridfree_in(dir, "db check --db moved/g.sqlite");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  fs::remove_all(dir / "moved/g.sqlite.runs");
+  EXPECT_EQ(ts::gridfree_in(dir, "db check --db moved/g.sqlite").exit_code, 1);
+}
+
 TEST(DbCommands, CheckListsEachBrokenInvariant) {
   const auto dir = ts::fresh_scratch_dir("db_cli", "check_broken");
   const auto db = checked_run(dir);
