@@ -124,8 +124,8 @@ int run_study(const RunOptions& ro) {
   const SchedulerSummary sum = run_scheduler(store, *executor, options, adopted);
   progress.finish();
   if (const auto fatal = executor->fatal_error())
-    throw InputError("--executor", *fatal + "; nothing more was submitted, the study's jobs are queued again (no "
-                                            "attempt spent): fix the cause and run again");
+    throw InputError("--executor", *fatal + "; nothing more was submitted, the study's jobs are queued again: fix "
+                                            "the cause and run again");
   // 4. Report and exit code.
   // Written once: the scheduler's write after the last job stands unless
   // something changed since (sched/scheduler.h, reports_current). After a
@@ -162,12 +162,15 @@ void add_run_command(CLI::App& app, int& exit_code) {
   sub->add_option("--db", ro->db, "SQLite database")->capture_default_str();
   sub->add_option("-j,--jobs", ro->jobs, "jobs at a time (default: cores)");
   add_executor_flags(sub, ro->executor);
-  sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
+  auto* timeout = sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->add_option("--out", ro->out, "report folder (default reports/<study>)");
   sub->add_option("--memory-budget", ro->memory_budget, kMemoryBudgetHelp);
   sub->add_flag("--replace", ro->replace,
                 "replace a stored study of the same name whose definition differs (finished jobs are reused)");
-  sub->callback([ro, &exit_code] { exit_code = run_study(*ro); });
+  sub->callback([ro, timeout, &exit_code] {
+    ro->timeout_s = timeout_flag(timeout, ro->timeout_s);
+    exit_code = run_study(*ro);
+  });
 }
 
 void add_submit_command(CLI::App& app, int& exit_code) {
@@ -206,8 +209,9 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
   sub->add_option("--memory-budget", *memory_budget, kMemoryBudgetHelp);
   sub->add_option("-j,--jobs", *jobs, "jobs at a time (default: cores)");
   add_executor_flags(sub, *executor_flags);
-  sub->add_option("--timeout", *timeout, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
+  auto* timeout_option = sub->add_option("--timeout", *timeout, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
   sub->callback([=, &exit_code] {
+    *timeout = timeout_flag(timeout_option, *timeout);
     // A daemon runs for days: every log line carries its time.
     spdlog::set_pattern("[%Y-%m-%d %H:%M:%S] %^[%l]%$ %v");
     // The executor first: a missing Slurm command is refused before the
@@ -238,7 +242,7 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
       spdlog::info("daemon: stopped; {} job(s) finished this session", sum.finished);
     if (sum.reports_failed > 0) spdlog::error("daemon: {} report(s) could not be written", sum.reports_failed);
     if (const auto fatal = executor->fatal_error())
-      throw InputError("--executor", *fatal + "; the jobs in flight are queued again (no attempt spent)");
+      throw InputError("--executor", *fatal + "; the jobs in flight are queued again");
     exit_code = to_int(sum.reports_failed > 0 ? ExitCode::kInternalError : ExitCode::kOk);
   });
 }

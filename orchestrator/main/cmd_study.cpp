@@ -3,6 +3,7 @@
 // and the helpers they share (database, executor, scheduler options).
 #include "cmd_study.h"
 
+#include <cmath>
 #include <thread>
 
 #include <spdlog/spdlog.h>
@@ -43,10 +44,7 @@ int default_jobs() {
 }
 
 std::unique_ptr<Store> open_existing_store(const std::filesystem::path& db) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(db, ec))
-    throw InputError("--db", "no database at '" + db.string() + "' (submit or run a study first)");
-  return std::make_unique<Store>(db, false);
+  return std::make_unique<Store>(db, false);  // a missing file is refused (store/database_file.h)
 }
 
 long long require_study(Store& store, const std::string& name) {
@@ -55,10 +53,17 @@ long long require_study(Store& store, const std::string& name) {
   return *id;
 }
 
+double timeout_flag(const CLI::Option* option, double value) {
+  if (option->count() == 0) return kDerivedTimeout;
+  if (!std::isfinite(value) || value < 0)
+    throw InputError("--timeout", "must be a number of seconds >= 0 (0 = no timeout; leave it out for the default "
+                                  "derived from the cost model), not " + option->as<std::string>());
+  return value;
+}
+
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,
                                    const std::filesystem::path& out_override) {
   if (jobs < 1) throw InputError("-j", "needs at least 1 job at a time");
-  if (timeout_s < 0 && timeout_s != kDerivedTimeout) throw InputError("--timeout", "must not be negative");
   SchedulerOptions o;
   o.workers = jobs;
   o.threads_per_job = std::max(1, default_jobs() / jobs);

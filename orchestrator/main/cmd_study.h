@@ -45,6 +45,11 @@ long long require_study(Store& store, const std::string& name);
 // --timeout value meaning "derived from the cost model" (sched/job_timeout.h).
 inline constexpr double kDerivedTimeout = -1;
 
+// The --timeout of run/daemon: kDerivedTimeout when the flag was not given,
+// else its value, which must be a number of seconds >= 0 (0 = none);
+// anything else is refused naming the flag.
+double timeout_flag(const CLI::Option* option, double value);
+
 // Scheduler options common to run and daemon.
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,
                                    const std::filesystem::path& out_override);

@@ -8,6 +8,7 @@
 namespace gridfree::cli {
 
 void add_extrapolate_command(CLI::App& app, int& exit_code);
-void add_study_commands(CLI::App& app, int& exit_code);  // validate, plan, run, submit, daemon, status, report, cancel, delete, retry
+void add_study_commands(CLI::App& app, int& exit_code);
+void add_db_command(CLI::App& app, int& exit_code);      // db check | backup | vacuum  // validate, plan, run, submit, daemon, status, report, cancel, delete, retry
 
 }  // namespace gridfree::cli

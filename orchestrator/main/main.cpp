@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   int exit_code = to_int(ExitCode::kOk);
   cli::add_extrapolate_command(app, exit_code);
   cli::add_study_commands(app, exit_code);
+  cli::add_db_command(app, exit_code);
   app.add_subcommand("version", "print the version (as --version)")->callback([&version] {
     std::cout << version << '\n';
   });
@@ -67,10 +68,10 @@ int main(int argc, char** argv) {
     return to_int(ExitCode::kInvalidInput);
   } catch (const SqliteError& e) {
     // A database another process kept busy beyond the wait is not a bug
-    // (store/busy_wait.h); anything else from SQLite is.
-    const bool busy = (e.code() & 0xff) == SQLITE_BUSY || (e.code() & 0xff) == SQLITE_LOCKED;
-    std::cerr << (busy ? "error: " : "error: internal: ") << e.what() << '\n';
-    return to_int(ExitCode::kInternalError);
+    // (store/busy_wait.h), nor is a damaged file (the user's input, exit 2);
+    // anything else from SQLite is.
+    std::cerr << (busy_code(e.code()) || damaged_code(e.code()) ? "error: " : "error: internal: ") << e.what() << '\n';
+    return to_int(damaged_code(e.code()) ? ExitCode::kInvalidInput : ExitCode::kInternalError);
   } catch (const std::exception& e) {
     std::cerr << "error: internal: " << e.what() << '\n';
     return to_int(ExitCode::kInternalError);

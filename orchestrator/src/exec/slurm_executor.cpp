@@ -206,7 +206,8 @@ void SlurmExecutor::submit_group(const std::vector<JobLaunch>& group, const Slur
   // recording the id leaves this for the next one to find the job by.
   for (std::size_t i = 0; i < group.size(); ++i)
     std::ofstream(group[i].run_dir / "slurm_submit", std::ios::trunc) << script.string() << '\n' << i << '\n';
-  const ProcessOutput r = run_process(sbatch_command(a, settings_, script, dir));
+  const std::vector<std::string> command = sbatch_command(a, settings_, script, dir);
+  const ProcessOutput r = run_process(command);
   const std::string id = r.out.substr(0, r.out.find_first_of(";\n"));
   const bool ok = r.exit_code == 0 && !id.empty() && id.find_first_not_of("0123456789") == std::string::npos;
   if (ok) {
@@ -233,7 +234,7 @@ void SlurmExecutor::submit_group(const std::vector<JobLaunch>& group, const Slur
   // to blame, so none spends an attempt: they stay unsent (kill_all hands
   // them back to be requeued) and nothing more is submitted.
   fatal_ = r.not_found ? "sbatch could not be run (" + msg + "); PATH=" + path_text()
-                       : "sbatch refused the submission: " + msg;
+                       : refused_submission_message(r.exit_code, r.err.empty() ? r.out : r.err, command);
   spdlog::error("{}; {} job(s) go back to the queue, no attempt spent", *fatal_, group.size());
   unsent_.insert(unsent_.end(), group.begin(), group.end());
 }

@@ -46,16 +46,40 @@ SubmitFault classify_submit_failure(int exit_code, const std::string& e, bool no
 std::string submit_message(int exit_code, const std::string& e) {
   std::string msg;
   std::size_t start = 0;
-  while (start < e.size()) {
+  int lines = 0;
+  while (start < e.size() && lines < kSubmitMessageLines) {
     auto end = e.find('\n', start);
     if (end == std::string::npos) end = e.size();
     std::string line = e.substr(start, end - start);
     start = end + 1;
     if (line.empty()) continue;
     msg += (msg.empty() ? "" : " | ") + line;
+    ++lines;
   }
   if (msg.size() > 400) msg = msg.substr(0, 400) + "...";
   return msg.empty() ? "sbatch exit " + std::to_string(exit_code) : msg;
+}
+
+std::string command_text(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) {
+    if (!out.empty()) out += ' ';
+    const bool plain = !w.empty() && w.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                         "0123456789-_=./:,@%+") == std::string::npos;
+    if (plain) {
+      out += w;
+      continue;
+    }
+    out += '\'';
+    for (char c : w) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    out += '\'';
+  }
+  return out;
+}
+
+std::string refused_submission_message(int exit_code, const std::string& e, const std::vector<std::string>& command) {
+  return "sbatch refused the submission (exit " + std::to_string(exit_code) + "): " + submit_message(exit_code, e) +
+         "; refused command: " + command_text(command) + "; no job started, no attempt or core-hour spent";
 }
 
 bool never_startable(const std::string& r) {

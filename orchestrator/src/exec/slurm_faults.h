@@ -17,6 +17,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace gridfree {
 
@@ -26,8 +27,22 @@ enum class SubmitFault { kTransient, kPermanent };
 // when sbatch itself could not be run.
 SubmitFault classify_submit_failure(int exit_code, const std::string& stderr_text, bool not_found);
 
-// sbatch's stderr reduced to one line for a message ("" -> "exit N").
+// sbatch's stderr reduced to one line for a message: its first
+// kSubmitMessageLines non-empty lines joined by " | " ("" -> "exit N").
+inline constexpr int kSubmitMessageLines = 5;
 std::string submit_message(int exit_code, const std::string& stderr_text);
+
+// The words of a command as one line a user can paste into a shell (words
+// with characters the shell would read quoted).
+std::string command_text(const std::vector<std::string>& words);
+
+// What a permanently refused submission tells the user: sbatch's own words
+// (submit_message), the command that was refused, and that nothing was
+// spent ("sbatch refused the submission (exit 1): sbatch: error: invalid
+// partition name specified; refused command: sbatch --parsable ...; no job
+// started, no attempt or core-hour spent").
+std::string refused_submission_message(int exit_code, const std::string& stderr_text,
+                                       const std::vector<std::string>& command);
 
 // True when a pending job's Reason (squeue %r) means it can never start.
 bool never_startable(const std::string& reason);

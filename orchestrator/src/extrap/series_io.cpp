@@ -157,11 +157,16 @@ Series read_series_file(const std::filesystem::path& path) {
   buffer << in.rdbuf();
   const std::string text = buffer.str();
   const std::string ext = lower(path.extension().string());
-  if (ext == ".json") return parse_series_json(text, path.string());
-  if (ext == ".csv") return parse_series_csv(text, path.string());
   const std::string t = trim(text);
-  if (!t.empty() && t.front() == '{') return parse_series_json(text, path.string());
-  return parse_series_csv(text, path.string());
+  const bool json = ext == ".json" || (ext != ".csv" && !t.empty() && t.front() == '{');
+  Series s = json ? parse_series_json(text, path.string()) : parse_series_csv(text, path.string());
+  if (s.size() > kMaxSeriesPoints)
+    throw InputError(path.string(), "has " + std::to_string(s.size()) + " points; gridfree extrapolate takes at most " +
+                                        std::to_string(kMaxSeriesPoints) +
+                                        " (its power-law fit scans 4 000 orders over every point: about 2 s at the "
+                                        "limit; docs/LIMITS.md). A grid series has tens of grids: thin the series "
+                                        "or split it");
+  return s;
 }
 
 }  // namespace gridfree

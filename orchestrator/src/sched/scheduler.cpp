@@ -348,8 +348,12 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
 
   if (o.stop_requested()) {
     sum.interrupted = true;
+    // The jobs' error says why: sbatch's refusal when that stopped the run.
+    const auto fatal = executor.fatal_error();
+    const std::string reason = fatal ? "not started: " + *fatal + "; requeued for the next run"
+                                     : "interrupted: requeued for the next run";
     for (long long id : executor.kill_all()) {
-      store.release(id, o.owner, "interrupted: requeued for the next run");
+      store.release(id, o.owner, reason);
       ++sum.requeued;
       sum.reports_current = false;
     }

@@ -16,6 +16,10 @@
 #include <algorithm>
 #include <string>
 
+#include "core/input_error.h"
+#include "core/version.h"
+#include "store/database_file.h"
+#include "store/journal_mode.h"
 #include "store/schema_ensembles.h"
 #include "store/stability_view.h"
 
@@ -323,19 +327,19 @@ int schema_version(Database& db) {
 }
 
 void migrate(Database& db, int target) {
-  {
-    auto st = db.prepare("PRAGMA journal_mode = WAL");
-    st.step();
-  }
+  // Any number of processes may open a new file at once: the switch to WAL
+  // is retried while another one holds the file (store/journal_mode.h), and
+  // the version check and every step run in one exclusive transaction, so
+  // one process creates the tables and the others, waiting on the busy
+  // handler, find them made.
+  enable_wal(db);
   db.exec("PRAGMA synchronous = NORMAL");
   // Step 5 rebuilds the series table: dropping it must not cascade to the
   // rows that reference it (the pragma is a no-op inside a transaction).
   ForeignKeysOff fk_off(db);  // declared first: restored after the transaction ends
-  Transaction tx(db);
+  Transaction tx(db, Begin::kExclusive);
   const int v = schema_version(db);
-  if (v > kSchemaVersion)
-    throw SqliteError("database schema version " + std::to_string(v) + " is newer than this gridfree (" +
-                          std::to_string(kSchemaVersion) + ")", SQLITE_ERROR);
+  if (v > kSchemaVersion) throw InputError("--db", newer_schema_message(db, v, kSchemaVersion));
   if (v < 1 && target >= 1) db.exec(kV1);
   if (v < 2 && target >= 2) db.exec(kV2NominalDeltaStar);
   if (v < 3 && target >= 3) db.exec(kV3SlurmState);
@@ -354,7 +358,13 @@ void migrate(Database& db, int target) {
   }
   // Not a numbered step (store/stability_view.h): created if missing, on the full schema only.
   if (std::max(v, target) >= 10) ensure_stability_view(db);
-  db.exec("PRAGMA user_version = " + std::to_string(std::max(v, target)));
+  const int now = std::max(v, target);
+  if (now > v)  // who wrote this version: an older gridfree meeting the file names it (database_file.h)
+    db.prepare("INSERT INTO events(kind, message) VALUES ('schema', ?)")
+        .bind_all("schema version " + std::to_string(now) + " by " + version_string() + ", from version " +
+                  std::to_string(v))
+        .run();
+  db.exec("PRAGMA user_version = " + std::to_string(now));
   tx.commit();
 }
 

@@ -3,6 +3,7 @@
 #include "store/sqlite.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 namespace gridfree {
@@ -16,14 +17,26 @@ std::string busy_message(sqlite3* db) {
          " after the wait for it ended; try again when it has finished";
 }
 
+// A damaged file names itself and what to do (docs/DATABASE.md "Recovery").
+std::string damaged_message(sqlite3* db, const std::string& sqlite_words) {
+  const char* file = db != nullptr ? sqlite3_db_filename(db, "main") : nullptr;
+  const std::string name = file != nullptr && *file != '\0' ? file : "the database";
+  return "the database " + name + " is damaged (SQLite: " + sqlite_words + "); `gridfree db check --db " + name +
+         "` lists what is wrong, docs/DATABASE.md \"Recovery\" says how to save what it holds";
+}
+
 [[noreturn]] void fail(sqlite3* db, int rc, const std::string& context) {
   if ((rc & 0xff) == SQLITE_BUSY) throw SqliteError(busy_message(db), rc);
-  std::string msg = context + ": ";
-  msg += db != nullptr ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
-  throw SqliteError(msg, rc);
+  const std::string words = db != nullptr ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+  if (damaged_code(rc)) throw SqliteError(damaged_message(db, words), rc);
+  throw SqliteError(context + ": " + words, rc);
 }
 
 }  // namespace
+
+bool busy_code(int code) { return (code & 0xff) == SQLITE_BUSY || (code & 0xff) == SQLITE_LOCKED; }
+
+bool damaged_code(int code) { return (code & 0xff) == SQLITE_CORRUPT || (code & 0xff) == SQLITE_NOTADB; }
 
 Database::Database(const std::filesystem::path& file, bool create, int busy_timeout_ms) {
   const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_FULLMUTEX;
@@ -31,6 +44,8 @@ Database::Database(const std::filesystem::path& file, bool create, int busy_time
   if (rc != SQLITE_OK) {
     std::string msg = "cannot open database " + file.string() + ": " +
                       (db_ != nullptr ? sqlite3_errmsg(db_) : sqlite3_errstr(rc));
+    if (const int e = db_ != nullptr ? sqlite3_system_errno(db_) : 0; e != 0)
+      msg += std::string(" (") + std::strerror(e) + ")";
     sqlite3_close(db_);
     db_ = nullptr;
     throw SqliteError(msg, rc);
@@ -57,9 +72,12 @@ void Database::exec(std::string_view sql) {
     std::string msg = err != nullptr ? err : sqlite3_errstr(rc);
     sqlite3_free(err);
     if ((rc & 0xff) == SQLITE_BUSY) throw SqliteError(busy_message(db_), rc);
+    if (damaged_code(rc)) throw SqliteError(damaged_message(db_, msg), rc);
     throw SqliteError("sqlite: " + msg + " (in: " + text.substr(0, 80) + ")", rc);
   }
 }
+
+bool Database::wait_busy(int attempt) { return busy_wait_handler(busy_.get(), attempt) != 0; }
 
 Statement Database::prepare(std::string_view sql) { return Statement(db_, statements_, sql); }
 
@@ -139,8 +157,8 @@ std::optional<double> Statement::as_opt_double(int col) const {
   return as_double(col);
 }
 
-Transaction::Transaction(Database& db, bool immediate) : db_(db) {
-  db_.exec(immediate ? "BEGIN IMMEDIATE" : "BEGIN");
+Transaction::Transaction(Database& db, Begin begin) : db_(db) {
+  db_.exec(begin == Begin::kExclusive ? "BEGIN EXCLUSIVE" : begin == Begin::kImmediate ? "BEGIN IMMEDIATE" : "BEGIN");
 }
 
 Transaction::~Transaction() {

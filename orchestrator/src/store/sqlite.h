@@ -29,6 +29,13 @@ class SqliteError : public std::runtime_error {
   int code_;
 };
 
+// SQLITE_BUSY or SQLITE_LOCKED: another process kept the database beyond the wait.
+bool busy_code(int code);
+// SQLITE_CORRUPT or SQLITE_NOTADB: the file itself is damaged or not a
+// database (the user's file, not a bug); the error's message names the
+// file and `gridfree db check`.
+bool damaged_code(int code);
+
 class Statement;
 
 class Database {
@@ -47,6 +54,11 @@ class Database {
   int changes() const { return sqlite3_changes(db_); }
   sqlite3* handle() { return db_; }
   const StatementCache& statements() const { return statements_; }
+  // For a step SQLite refuses with SQLITE_BUSY without calling the busy
+  // handler (changing the journal mode while another connection reads):
+  // waits as the handler does for its `attempt`-th retry (0 first); false
+  // once the bound is reached.
+  bool wait_busy(int attempt);
 
  private:
   sqlite3* db_ = nullptr;
@@ -101,10 +113,13 @@ class Statement {
 };
 
 // BEGIN IMMEDIATE (takes the write lock at once) ... COMMIT; rolls back in
-// the destructor if commit() was not reached.
+// the destructor if commit() was not reached. kExclusive also keeps readers
+// out where the file is not in WAL mode (in WAL mode it is IMMEDIATE).
+enum class Begin { kDeferred, kImmediate, kExclusive };
+
 class Transaction {
  public:
-  explicit Transaction(Database& db, bool immediate = true);
+  explicit Transaction(Database& db, Begin begin = Begin::kImmediate);
   ~Transaction();
   Transaction(const Transaction&) = delete;
   Transaction& operator=(const Transaction&) = delete;

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "core/input_error.h"
+#include "store/database_file.h"
 #include "store/schema.h"
 #include "store/store_ensembles.h"
 #include "store/store.h"
@@ -20,8 +21,15 @@ std::set<std::string> expanded_job_hashes(const ExpandedStudy& expanded) {
 
 }  // namespace
 
-Store::Store(const std::filesystem::path& file, bool create) : file_(file), db_(file, create) {
+// The file is checked before SQLite opens it (a directory, a missing folder,
+// not a SQLite file); what SQLite says about it while opening is put in the
+// user's words (store/database_file.h).
+Store::Store(const std::filesystem::path& file, bool create) try
+    : file_((check_database_file(file, create), file)), db_(file, create) {
   migrate(db_);
+} catch (const SqliteError& e) {
+  if (auto problem = database_file_error(file, e)) throw *problem;
+  throw;
 }
 
 std::optional<long long> Store::study_id(const std::string& name) {

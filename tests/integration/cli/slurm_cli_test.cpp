@@ -100,8 +100,12 @@ TEST(SlurmCli, ARefusedSubmissionSpendsNoAttemptAndTheNextRunFinishes) {
   auto r = slurm_gridfree(dir, run, path);
   EXPECT_EQ(r.code, 2) << r.text;
   EXPECT_NE(r.text.find("invalid partition name specified"), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find("refused command: sbatch --parsable"), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find("no attempt or core-hour spent"), std::string::npos) << r.text;
   const auto db = dir / "g.sqlite";
   EXPECT_EQ(sqlite_query(db, "SELECT status, attempts, COUNT(*) FROM jobs GROUP BY status, attempts"), "queued|0|3");
+  // The jobs keep sbatch's reason, not only "interrupted".
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM jobs WHERE error LIKE '%invalid partition name specified%'"), "3");
   EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM results"), "0");
   fs::remove(dir / "refuse");
   r = slurm_gridfree(dir, run, path);

@@ -41,6 +41,18 @@ TEST(SlurmFaults, RefusalsOfTheJobItselfArePermanent) {
 TEST(SlurmFaults, TheMessageKeepsSbatchsWordsOnOneLine) {
   EXPECT_EQ(submit_message(1, "sbatch: error: a\n\nsbatch: error: b\n"), "sbatch: error: a | sbatch: error: b");
   EXPECT_EQ(submit_message(7, ""), "sbatch exit 7");
+  // The first kSubmitMessageLines lines only.
+  EXPECT_EQ(submit_message(1, "1\n2\n3\n4\n5\n6\n7\n"), "1 | 2 | 3 | 4 | 5");
+}
+
+TEST(SlurmFaults, ARefusalNamesSbatchsWordsTheCommandAndThatNothingWasSpent) {
+  EXPECT_EQ(command_text({"sbatch", "--partition=x", "--job-name=a b", "it's.sh"}),
+            "sbatch --partition=x '--job-name=a b' 'it'\\''s.sh'");
+  EXPECT_EQ(refused_submission_message(1, "sbatch: error: invalid partition name specified\n",
+                                       {"sbatch", "--parsable", "--partition=nope", "/runs/a.sbatch"}),
+            "sbatch refused the submission (exit 1): sbatch: error: invalid partition name specified; refused "
+            "command: sbatch --parsable --partition=nope /runs/a.sbatch; no job started, no attempt or core-hour "
+            "spent");
 }
 
 TEST(SlurmFaults, OnlyReasonsNoWaitingCanChangeAreNeverStartable) {

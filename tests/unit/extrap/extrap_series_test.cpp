@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Input validation, sorting, weights and file parsing of a series.
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <string>
@@ -108,6 +112,23 @@ TEST(ExtrapSeriesIo, CsvProblemsNameTheLine) {
   expect_problem([] { parse_series_csv("x,y\n1,2\n", "s.csv"); }, "s.csv:1", "header");
   expect_problem([] { parse_series_csv("h,f\n1,2\n3,4\n1,5\n", "s.csv"); }, "s.csv:4", "duplicate");
   expect_problem([] { parse_series_csv("", "s.csv"); }, "s.csv", "empty");
+}
+
+// A file of kMaxSeriesPoints points is read; one more is refused naming the
+// file and the limit (docs/LIMITS.md "gridfree extrapolate").
+TEST(ExtrapSeriesIo, AFileOverThePointLimitIsRefusedNamingIt) {
+  const auto dir = std::filesystem::temp_directory_path() / ("gridfree_series_limit_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto write = [&](std::size_t n, const char* name) {
+    std::ofstream out(dir / name);
+    out << "h,f\n";
+    for (std::size_t i = 0; i < n; ++i) out << 1.0 + static_cast<double>(i) * 1e-3 << ',' << 2.0 + 1e-6 * i << '\n';
+    return dir / name;
+  };
+  EXPECT_EQ(read_series_file(write(kMaxSeriesPoints, "at.csv")).size(), kMaxSeriesPoints);
+  const auto over = write(kMaxSeriesPoints + 1, "over.csv");
+  expect_problem([&] { read_series_file(over); }, over.string(), "at most 10000");
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
