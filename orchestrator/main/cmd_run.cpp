@@ -52,6 +52,10 @@ void apply_memory_budget(SchedulerOptions& options, const ExecutorFlags& executo
                memory_text(budget.bytes), budget.source);
 }
 
+constexpr const char* kTimeoutHelp =
+    "per-job timeout: seconds > 0, or 'none' (default: the study's timeout_s, else 20 x the plan's estimate, at "
+    "least 1 h)";
+
 constexpr const char* kMemoryBudgetHelp =
     "memory the running jobs' estimates may add up to, e.g. 12G (default: MemAvailable at start; local executor)";
 
@@ -162,13 +166,14 @@ void add_run_command(CLI::App& app, int& exit_code) {
   sub->add_option("--db", ro->db, "SQLite database")->capture_default_str();
   sub->add_option("-j,--jobs", ro->jobs, "jobs at a time (default: cores)");
   add_executor_flags(sub, ro->executor);
-  auto* timeout = sub->add_option("--timeout", ro->timeout_s, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
+  auto timeout_text = std::make_shared<std::string>();
+  auto* timeout = sub->add_option("--timeout", *timeout_text, kTimeoutHelp);
   sub->add_option("--out", ro->out, "report folder (default reports/<study>)");
   sub->add_option("--memory-budget", ro->memory_budget, kMemoryBudgetHelp);
   sub->add_flag("--replace", ro->replace,
                 "replace a stored study of the same name whose definition differs (finished jobs are reused)");
-  sub->callback([ro, timeout, &exit_code] {
-    ro->timeout_s = timeout_flag(timeout, ro->timeout_s);
+  sub->callback([ro, timeout, timeout_text, &exit_code] {
+    ro->timeout_s = timeout_flag(timeout, *timeout_text);
     exit_code = run_study(*ro);
   });
 }
@@ -204,14 +209,15 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
   auto jobs = std::make_shared<int>(default_jobs());
   auto executor_flags = std::make_shared<ExecutorFlags>();
   auto timeout = std::make_shared<double>(kDerivedTimeout);
+  auto timeout_text = std::make_shared<std::string>();
   auto memory_budget = std::make_shared<std::string>();
   sub->add_option("--db", *db, "SQLite database")->capture_default_str();
   sub->add_option("--memory-budget", *memory_budget, kMemoryBudgetHelp);
   sub->add_option("-j,--jobs", *jobs, "jobs at a time (default: cores)");
   add_executor_flags(sub, *executor_flags);
-  auto* timeout_option = sub->add_option("--timeout", *timeout, "per-job timeout in seconds (default: the study's timeout_s, else 20 x the plan's estimate, at least 1 h; 0 = none)");
+  auto* timeout_option = sub->add_option("--timeout", *timeout_text, kTimeoutHelp);
   sub->callback([=, &exit_code] {
-    *timeout = timeout_flag(timeout_option, *timeout);
+    *timeout = timeout_flag(timeout_option, *timeout_text);
     // A daemon runs for days: every log line carries its time.
     spdlog::set_pattern("[%Y-%m-%d %H:%M:%S] %^[%l]%$ %v");
     // The executor first: a missing Slurm command is refused before the

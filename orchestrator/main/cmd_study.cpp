@@ -3,6 +3,8 @@
 // and the helpers they share (database, executor, scheduler options).
 #include "cmd_study.h"
 
+#include <charconv>
+#include <limits>
 #include <cmath>
 #include <thread>
 
@@ -53,11 +55,14 @@ long long require_study(Store& store, const std::string& name) {
   return *id;
 }
 
-double timeout_flag(const CLI::Option* option, double value) {
+double timeout_flag(const CLI::Option* option, const std::string& text) {
   if (option->count() == 0) return kDerivedTimeout;
-  if (!std::isfinite(value) || value < 0)
-    throw InputError("--timeout", "must be a number of seconds >= 0 (0 = no timeout; leave it out for the default "
-                                  "derived from the cost model), not " + option->as<std::string>());
+  if (text == "none") return 0;  // SchedulerOptions::timeout_s: 0 = none
+  double value = std::numeric_limits<double>::quiet_NaN();
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value) || value <= 0)
+    throw InputError("--timeout", "must be a positive number of seconds, or 'none' for no timeout (leave it out for "
+                                  "the default derived from the cost model), not '" + text + "'");
   return value;
 }
 

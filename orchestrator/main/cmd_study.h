@@ -46,9 +46,9 @@ long long require_study(Store& store, const std::string& name);
 inline constexpr double kDerivedTimeout = -1;
 
 // The --timeout of run/daemon: kDerivedTimeout when the flag was not given,
-// else its value, which must be a number of seconds >= 0 (0 = none);
-// anything else is refused naming the flag.
-double timeout_flag(const CLI::Option* option, double value);
+// else its text: a positive number of seconds, or "none" (returned as 0,
+// no timeout); anything else is refused naming the flag.
+double timeout_flag(const CLI::Option* option, const std::string& text);
 
 // Scheduler options common to run and daemon.
 SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, double timeout_s,

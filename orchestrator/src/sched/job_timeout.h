@@ -9,7 +9,7 @@
 //
 // The margin covers a machine several times slower or busier than the one
 // the model was measured on and iteration counts well above the model's
-// (docs/LIMITS.md); `--timeout S` overrides it, `--timeout 0` disables it.
+// (docs/LIMITS.md); `--timeout S` overrides it, `--timeout none` disables it.
 #pragma once
 
 #include <array>

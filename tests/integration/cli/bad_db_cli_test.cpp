@@ -2,7 +2,7 @@
 // Every way a --db can be wrong is the user's input, not a bug
 // (store/database_file.h, docs/DATABASE.md "When --db is wrong"): exit 2,
 // a message naming the path and the problem, never "internal", and the
-// file left as it was. Also --timeout outside [0, ∞) refused naming the flag.
+// file left as it was. Also a --timeout that is neither seconds > 0 nor "none" refused naming the flag.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -134,15 +134,20 @@ TEST(BadDb, EachMigrationRecordsTheGridfreeThatMadeIt) {
             "1");
 }
 
-TEST(BadDb, ANegativeTimeoutIsRefusedNamingTheFlag) {
+TEST(BadDb, ATimeoutNotPositiveIsRefusedNamingTheFlag) {
   const auto dir = ts::fresh_scratch_dir("bad_db", "timeout");
   const auto study = ts::write_ok_study(dir, "s");
-  for (const char* t : {"-1", "-5", "-0.5", "nan", "inf"}) {
+  for (const char* t : {"-1", "-5", "-0.5", "0", "nan", "inf", "10s", "never"}) {
     SCOPED_TRACE(t);
     expect_refused(dir, "run " + ts::shell_quote(study.string()) + " --db g.sqlite --timeout " + t, {"--timeout"});
     expect_refused(dir, "daemon --db g.sqlite --timeout " + std::string(t), {"--timeout"});
   }
   EXPECT_FALSE(fs::exists(dir / "g.sqlite"));  // refused before the database was opened
+  // The two accepted forms: seconds > 0, and "none".
+  for (const char* t : {"none", "3600"}) {
+    const auto r = ts::gridfree_in(dir, "run " + ts::shell_quote(study.string()) + " -j 1 --db ok.sqlite --timeout " + t);
+    EXPECT_EQ(r.exit_code, 0) << t << '\n' << r.err;
+  }
 }
 
 }  // namespace
