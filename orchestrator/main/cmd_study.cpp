@@ -25,16 +25,7 @@ void add_study_commands(CLI::App& app, int& exit_code) {
   add_cancel_command(app, exit_code);
   add_delete_command(app, exit_code);
   add_retry_command(app, exit_code);
-}
-
-void remove_run_folders(const std::filesystem::path& db, const std::vector<std::string>& job_hashes) {
-  const auto root = runs_root_for(db);
-  for (const auto& hash : job_hashes) {
-    if (hash.empty() || hash.find('/') != std::string::npos || hash.find("..") != std::string::npos) continue;
-    std::error_code ec;
-    std::filesystem::remove_all(root / hash, ec);  // the flat layout of older versions
-    std::filesystem::remove_all(run_dir_for(root, hash), ec);
-  }
+  add_gc_command(app, exit_code);
 }
 
 int default_jobs() {
