@@ -123,9 +123,8 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
           (job.memory_basis.rfind("declared", 0) == 0 ? std::string("from the declared cost.mb_per_cell x ") : safety) +
           margin_text;
     } else {
-      a.mem_from =
-          "not given, the cluster's default (external code without cost.mb_per_cell or a finished job of the case: "
-          "give --mem or mem_mb)";
+      a.mem_from = "not given, the cluster's default (external code, memory " +
+                   (job.memory_basis.empty() ? std::string("unknown") : job.memory_basis) + ": give --mem or mem_mb)";
     }
   } else if (sized) {
     a.mem_mb = ladder(settings_.margin * estimated_memory_bytes(job.cells) / (1024.0 * 1024.0));

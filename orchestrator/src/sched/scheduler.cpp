@@ -19,6 +19,8 @@
 #include "sched/external_result.h"
 #include "sched/job_timeout.h"
 #include "study/cost_model.h"
+#include "study/format_number.h"
+#include "study/study_plan.h"
 #include "sched/outcome.h"
 #include "sched/progress_tally.h"
 #include "sched/report_pacer.h"
@@ -139,6 +141,11 @@ double job_timeout_s(const SchedulerOptions& o, const StudyFacts& facts, const C
   return default_job_timeout_s(job.cells, o.threads_per_job, apriori_cost_ratio(job.spec, job.cells).ratio);
 }
 
+// "0.233 s" below a minute (a small external job's time), else as the plan writes it.
+std::string cpu_seconds_text(double s) {
+  return std::isfinite(s) && s < 60 ? format_number("%.3g", s) + " s" : human_seconds(s);
+}
+
 // "memory unknown (...)": why an external job's memory is not counted.
 std::string unknown_memory_note(const ExternalJobCost& c) { return "memory " + c.memory_basis; }
 
@@ -248,6 +255,9 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       else if (o.memory_budget_bytes > 0 && f.memory_bytes > o.memory_budget_bytes)
         spdlog::warn("{}: its estimated memory {} exceeds the memory budget {}; it runs alone", f.label,
                      memory_text(f.memory_bytes), memory_text(o.memory_budget_bytes));
+      else if (cost)  // where an external job's estimates come from (study/external_cost.h)
+        spdlog::info("{}: estimated memory {} ({}); CPU {} ({})", f.label, memory_text(cost->memory_bytes),
+                     cost->memory_basis, cpu_seconds_text(cost->cpu_s), cost->basis);
       JobLaunch launch;
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
