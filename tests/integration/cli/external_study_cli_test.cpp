@@ -220,6 +220,18 @@ TEST(ExternalStudyCli, MemoryIsUnknownUntilMeasuredAndPlanShowsTheMeasuredEstima
   EXPECT_NE(first.err.find("memory unknown (no cost.mb_per_cell and no finished job of the case yet): it runs alone"),
             std::string::npos)
       << first.err;
+  // One measured size says nothing above it: the next grid (N = 6, 36 cells)
+  // probes alone too; from two sizes on, each start says where its estimates come from.
+  {
+    std::ifstream runs(dir / "runs.txt");
+    std::string line;
+    std::getline(runs, line);
+    std::getline(runs, line);
+    EXPECT_EQ(line.rfind("run h=0.1666", 0), 0u) << line;
+  }
+  EXPECT_NE(first.err.find("memory unknown above 16 cells: one measured size"), std::string::npos) << first.err;
+  EXPECT_NE(first.err.find("(history: peak memory of 2 finished job(s) of the case at 2 sizes"), std::string::npos)
+      << first.err;
   const double peak = query_number(sqlite_query(dir / "g.sqlite", "SELECT MAX(peak_rss_mb) FROM results"));
   ASSERT_GT(peak, 0);
   // The report speaks of h and the value, not of Δ* and DP* (docs/REPORTS.md).
