@@ -275,11 +275,19 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
   // Variables: grid variables are the study's; derived ones may not shadow them.
   std::set<std::string> defined;
   for (const auto& [n, v] : grids) defined.insert(n);
+  // @@cores@@ is the job's cores (study/job_cores.h), given by the driver.
+  if (grids.count(kExternalCoresPlaceholder) != 0)
+    problems.add_once(child_pointer("/grids/variables", kExternalCoresPlaceholder),
+                      "'cores' is the job's number of cores (@@cores@@, the study's cores rule); name the variable otherwise");
   if (auto v = ext.find("variables"); v != ext.end() && v->is_object())
     for (auto it = v->begin(); it != v->end(); ++it) {
       const std::string where = child_pointer(at + "/variables", it.key());
       if (!valid_external_name(it.key())) {
         problems.add(where, "a variable name is a letter or '_' followed by letters, digits or '_'");
+        continue;
+      }
+      if (it.key() == kExternalCoresPlaceholder) {
+        problems.add(where, "'cores' is the job's number of cores (@@cores@@, the study's cores rule); name the variable otherwise");
         continue;
       }
       if (grids.count(it.key()) != 0) {
@@ -365,7 +373,9 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
       problems.add(at + "/cost", "per-cell costs need the cells expression (external/cells)");
   }
   if (problems.problems().size() != before) return std::nullopt;
-  check_external_render_files(c, defined, at, problems);
+  std::set<std::string> placeholders = defined;
+  placeholders.insert(kExternalCoresPlaceholder);
+  check_external_render_files(c, placeholders, at, problems);
   if (external_grid_count(grids) > 0) check_external_grids(c, grids, at, problems);
   if (problems.problems().size() != before) return std::nullopt;
   return c;
