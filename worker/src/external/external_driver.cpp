@@ -237,8 +237,11 @@ ExternalSightings gather_sightings(const ExternalJob& job, const fs::path& case_
   return s;
 }
 
-void prepare_external_case(const ExternalJob& job, const fs::path& run_dir) {
+void prepare_external_case(const ExternalJob& job, const fs::path& run_dir, int cores) {
   const fs::path case_dir = run_dir / kCaseFolder;
+  RenderVariables variables = job.variables;
+  const bool has_cores = std::any_of(variables.begin(), variables.end(), [](const auto& v) { return v.first == "cores"; });
+  if (!has_cores) variables.emplace_back("cores", cores);
   fs::remove_all(case_dir);
   copy_template(job.template_dir, case_dir);
   for (std::size_t i = 0; i < job.render.size(); ++i) {
@@ -247,10 +250,10 @@ void prepare_external_case(const ExternalJob& job, const fs::path& run_dir) {
     if (!text || fs::is_directory(job.template_dir / job.render[i]))
       throw InputError(where, job.render[i] + " is not a file in the template folder");
     try {
-      driver_write_text(case_dir / job.render[i], render_placeholders(*text, job.variables, job.render[i]));
+      driver_write_text(case_dir / job.render[i], render_placeholders(*text, variables, job.render[i]));
     } catch (const UndefinedPlaceholder& e) {
       std::string known;
-      for (const auto& [name, value] : job.variables) known += (known.empty() ? "" : ", ") + name;
+      for (const auto& [name, value] : variables) known += (known.empty() ? "" : ", ") + name;
       throw InputError(where, std::string(e.what()) + " (variables: " + (known.empty() ? "none" : known) + ")");
     }
   }
@@ -272,7 +275,7 @@ ExternalRunEnd run_external_job(const ExternalJob& job, const ExternalRunOptions
                                            job.template_sha256.substr(0, 12) + "); plan the study again");
     return end;
   }
-  prepare_external_case(job, options.run_dir);
+  prepare_external_case(job, options.run_dir, options.cores);
   const fs::path case_dir = options.run_dir / kCaseFolder;
   if (options.stop_requested && options.stop_requested()) {  // asked to stop while copying
     end.stopped = true;
