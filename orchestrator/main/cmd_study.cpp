@@ -53,6 +53,7 @@ SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, do
   SchedulerOptions o;
   o.workers = jobs;
   o.threads_per_job = std::max(1, default_jobs() / jobs);
+  o.cores = std::max(default_jobs(), jobs);  // -j jobs of threads_per_job cores always fit (sched/budget.h)
   spdlog::info("{} job(s) at a time, {} thread(s) each ({} cores)", jobs, o.threads_per_job, default_jobs());
   o.timeout_s = timeout_s;
   o.runs_root = runs_root_for(db);
