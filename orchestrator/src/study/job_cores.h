@@ -19,6 +19,10 @@
 
 namespace gridfree {
 
+// A cap that never binds: the rule's own value (plan's listing, before the
+// pool is known).
+inline constexpr int kUncappedCores = 1 << 20;
+
 // The variable the expression may read.
 inline constexpr const char* kCoresVariable = "cells";
 

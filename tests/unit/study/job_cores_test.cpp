@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
+#include "study/grid_listing.h"
 #include "study/job_cores.h"
 #include "study/study.h"
 #include "study_documents.h"
@@ -75,6 +76,23 @@ TEST(JobCores, PhysicalStudyRefusesARuleThatIsNoNumberOnAGrid) {
   }
   doc["cores"] = 0;
   EXPECT_THROW(test_support::study_of(doc), InputError);  // the schema: at least 1
+}
+
+// validate/plan list each grid's cores by the rule, before the pool's cap.
+TEST(JobCores, GridListingShowsEachGridsCores) {
+  auto doc = test_support::quickstart_document();
+  doc["grids"] = {{"delta_star", {3.3, 2.0}}};  // 9 x 61 x 3 = 1 647 and 15 x 100 x 5 = 7 500 cells
+  const auto plain = grid_listing(test_support::study_of(doc));
+  EXPECT_FALSE(plain[0].cores);
+  EXPECT_EQ(grid_listing_table(plain).find("cores"), std::string::npos);
+  doc["cores"] = "max(1, cells / 1000)";
+  const auto rows = grid_listing(test_support::study_of(doc));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].cores, 1);  // 1.647
+  EXPECT_EQ(rows[1].cores, 7);  // 7.5, not capped here
+  const std::string table = grid_listing_table(rows);
+  EXPECT_NE(table.find("cores = max(1, cells / 1000) per job"), std::string::npos) << table;
+  EXPECT_EQ(grid_listing_json(rows)[1]["cores"], 7);
 }
 
 }  // namespace
