@@ -61,15 +61,14 @@ constexpr const char* kMemoryBudgetHelp =
 
 SubmitResult submit_study(Store& store, const Study& study, const ExpandedStudy& ex, bool replace) {
   const SubmitResult r = store.submit(study, ex, replace);
+  // Jobs no study needs any more are kept, reusable (store/unneeded_jobs.h).
+  const std::string kept = std::to_string(r.jobs_unneeded.size()) +
+                           " job(s) no study needs any more kept (reused if asked for again; `gridfree gc` removes them)";
   if (r.replaced && r.jobs_changed)
-    spdlog::info("'{}': its template or code version changed since it was stored: its jobs were replaced; {} job(s) "
-                 "no study needs any more removed", study.name, r.jobs_removed.size());
+    spdlog::info("'{}': its template or code version changed since it was stored: its jobs were replaced; {}",
+                 study.name, kept);
   else if (r.replaced)
-    spdlog::info("'{}': the stored definition was replaced; {} job(s) no study needs any more removed", study.name,
-                 r.jobs_removed.size());
-  if (r.replaced) {
-    remove_run_folders(store.file(), r.jobs_removed);
-  }
+    spdlog::info("'{}': the stored definition was replaced; {}", study.name, kept);
   if (r.created)
     spdlog::info("submitted '{}': {} series, {} jobs ({} new, {} already done)", study.name, ex.series.size(),
                  r.jobs_total, r.jobs_new, r.jobs_reused);

@@ -28,16 +28,7 @@ void add_study_commands(CLI::App& app, int& exit_code) {
   add_cancel_command(app, exit_code);
   add_delete_command(app, exit_code);
   add_retry_command(app, exit_code);
-}
-
-void remove_run_folders(const std::filesystem::path& db, const std::vector<std::string>& job_hashes) {
-  const auto root = runs_root_for(db);
-  for (const auto& hash : job_hashes) {
-    if (hash.empty() || hash.find('/') != std::string::npos || hash.find("..") != std::string::npos) continue;
-    std::error_code ec;
-    std::filesystem::remove_all(root / hash, ec);  // the flat layout of older versions
-    std::filesystem::remove_all(run_dir_for(root, hash), ec);
-  }
+  add_gc_command(app, exit_code);
 }
 
 int default_jobs() {
@@ -72,6 +63,7 @@ SchedulerOptions scheduler_options(const std::filesystem::path& db, int jobs, do
   SchedulerOptions o;
   o.workers = jobs;
   o.threads_per_job = std::max(1, default_jobs() / jobs);
+  o.cores = std::max(default_jobs(), jobs);  // -j jobs of threads_per_job cores always fit (sched/budget.h)
   spdlog::info("{} job(s) at a time, {} thread(s) each ({} cores)", jobs, o.threads_per_job, default_jobs());
   o.timeout_s = timeout_s;
   o.runs_root = runs_root_for(db);

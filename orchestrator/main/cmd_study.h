@@ -26,11 +26,8 @@ void add_status_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_cancel_command(CLI::App& app, int& exit_code);
 void add_delete_command(CLI::App& app, int& exit_code);
-
-// Removes the run folders (exec/executor.h run_dir_for, sharded or flat) of
-// jobs the store removed.
-void remove_run_folders(const std::filesystem::path& db, const std::vector<std::string>& job_hashes);
 void add_retry_command(CLI::App& app, int& exit_code);
+void add_gc_command(CLI::App& app, int& exit_code);
 
 inline constexpr const char* kDefaultDb = "gridfree.sqlite";
 

@@ -90,6 +90,7 @@ std::unique_ptr<Executor> make_executor(const ExecutorFlags& f, const std::strin
   options.runs_root = runs;
   options.workers = s.max_queued.value_or(1000);
   options.threads_per_job = s.cpus_per_task.value_or(1);
+  options.cores = 0;  // Slurm places the jobs; a cores rule is capped by --cpus-per-task
   return std::make_unique<SlurmExecutor>(worker, runs, s, jobs);
 }
 

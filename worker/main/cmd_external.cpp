@@ -8,6 +8,8 @@
 // written, with the reason); 2 invalid job (nothing written); 130 stopped by
 // SIGTERM/SIGINT (forwarded to the command; no result). --progress FILE gets
 // {"elapsed_s", "pid", "updated_unix_s", "external": true} every ~2 s.
+// The --threads in effect is the template's @@cores@@ (docs/EXTERNAL.md
+// "Cores and MPI").
 // collect: the result from an existing case/ without running anything
 // (after the study's collect section changed), same exit codes.
 #include <unistd.h>
@@ -81,7 +83,7 @@ int run_collect(const CollectCommandOptions& o) {
 }  // namespace
 
 int run_external_solve(const std::filesystem::path& job_path, const nlohmann::json& doc, const std::string& output,
-                       const std::string& progress_file) {
+                       const std::string& progress_file, int cores) {
   // From here on a stop request is a flag (a SIGTERM while the template is
   // copied must not kill the worker half-way; the driver checks the flag
   // before it starts the command).
@@ -92,6 +94,7 @@ int run_external_solve(const std::filesystem::path& job_path, const nlohmann::js
   options.run_dir = run_dir;
   options.job_hash = job_hash(doc);
   options.worker_version = version_string();
+  options.cores = cores;
   options.stop_requested = [] { return stop_requested(); };
   options.on_tick = [&progress_file](double elapsed) {
     if (progress_file.empty()) return;

@@ -135,7 +135,7 @@ int run_solve(const SolveCommandOptions& o) {
   check_output_path("-o", o.output);
   const std::filesystem::path job_path(o.job_file);
   const nlohmann::json doc = read_json_file(job_path);
-  if (is_external_job(doc)) return run_external_solve(job_path, doc, o.output, o.progress_file);
+  if (is_external_job(doc)) return run_external_solve(job_path, doc, o.output, o.progress_file, threads);
   const JobSpec job = parse_job(doc, job_path.has_parent_path() ? job_path.parent_path() : ".");
   check_memory(job, o.max_memory);
 

@@ -18,7 +18,8 @@ void add_align_command(CLI::App& app, int& exit_code);
 void add_collect_command(CLI::App& app, int& exit_code);
 
 // `solve` of a job with /case/external (cmd_external.cpp): its exit code.
+// `cores` (the --threads in effect) is the template's @@cores@@.
 int run_external_solve(const std::filesystem::path& job_path, const nlohmann::json& doc, const std::string& output,
-                       const std::string& progress_file);
+                       const std::string& progress_file, int cores);
 
 }  // namespace gridfree::worker_cli

@@ -20,6 +20,9 @@ struct JobLaunch {
   std::string job_hash;
   std::filesystem::path run_dir;   // holds job.json; result.json and worker.log go here
   int threads = 1;                 // --threads for the worker
+  // The cores the study's cores rule gives the job (study/job_cores.h; then
+  // threads == cores, and an external template's @@cores@@); 0 = no rule.
+  int cores = 0;
   double timeout_s = 0;            // 0 = none
   // The worker is created but does not run until release(job_id): the caller
   // records external_id() first, so no worker runs that a restart could not

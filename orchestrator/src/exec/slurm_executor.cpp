@@ -69,6 +69,7 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
   a.threads = std::max(1, job.threads);
   a.bed_cache = job.bed_cache;
   a.cpus = settings_.cpus_per_task.value_or(a.threads);
+  apply_job_cores(a, job);  // a cores rule: the job's own --ntasks / --cpus-per-task
   a.throttle = slots_;
   const bool sized = job.cells[0] > 0 && job.cells[1] > 0 && job.cells[2] > 0;
   char margin_text[48];
@@ -123,9 +124,8 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
           (job.memory_basis.rfind("declared", 0) == 0 ? std::string("from the declared cost.mb_per_cell x ") : safety) +
           margin_text;
     } else {
-      a.mem_from =
-          "not given, the cluster's default (external code without cost.mb_per_cell or a finished job of the case: "
-          "give --mem or mem_mb)";
+      a.mem_from = "not given, the cluster's default (external code, memory " +
+                   (job.memory_basis.empty() ? std::string("unknown") : job.memory_basis) + ": give --mem or mem_mb)";
     }
   } else if (sized) {
     a.mem_mb = ladder(settings_.margin * estimated_memory_bytes(job.cells) / (1024.0 * 1024.0));
@@ -164,9 +164,7 @@ void SlurmExecutor::submit_unsent() {
   for (const auto& job : unsent_) {
     const SlurmArray s = shape_of(job);
     auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) {
-      return x.first.cpus == s.cpus && x.first.threads == s.threads && x.first.time_minutes == s.time_minutes &&
-             x.first.mem_mb == s.mem_mb && x.first.stop_lead_s == s.stop_lead_s && x.first.bed_cache == s.bed_cache &&
-             x.second.size() < max_size;
+      return same_array_shape(x.first, s) && x.second.size() < max_size;
     });
     if (g == groups.end()) groups.push_back({s, {job}});
     else g->second.push_back(job);

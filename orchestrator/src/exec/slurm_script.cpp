@@ -32,6 +32,23 @@ std::string slurm_job_name(const std::string& text) {
   return out.empty() ? "gridfree" : out;
 }
 
+void apply_job_cores(SlurmArray& a, const JobLaunch& job) {
+  if (job.cores <= 0) return;
+  a.threads = job.cores;
+  if (job.external) {
+    a.tasks = job.cores;
+    a.cpus = 1;
+  } else {
+    a.tasks = 1;
+    a.cpus = job.cores;
+  }
+}
+
+bool same_array_shape(const SlurmArray& a, const SlurmArray& b) {
+  return a.cpus == b.cpus && a.tasks == b.tasks && a.threads == b.threads && a.time_minutes == b.time_minutes &&
+         a.mem_mb == b.mem_mb && a.stop_lead_s == b.stop_lead_s && a.bed_cache == b.bed_cache;
+}
+
 std::string array_script(const std::filesystem::path& worker, const SlurmArray& a,
                          const std::vector<std::string>& setup) {
   std::ostringstream s;
@@ -116,6 +133,7 @@ std::vector<std::string> sbatch_command(const SlurmArray& a, const SlurmSettings
   std::vector<std::string> c = {"sbatch", "--parsable", "--job-name=" + slurm_job_name(a.name),
                                 "--output=" + (log_dir / "%A_%a.out").string(),
                                 "--cpus-per-task=" + std::to_string(a.cpus)};
+  if (a.tasks > 1) c.push_back("--ntasks=" + std::to_string(a.tasks));
   std::string range = "--array=0-" + std::to_string(a.run_dirs.size() - 1);
   if (a.throttle > 0) range += "%" + std::to_string(a.throttle);
   c.push_back(range);

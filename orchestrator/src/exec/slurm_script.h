@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "exec/executor.h"
 #include "exec/slurm_settings.h"
 
 namespace gridfree {
@@ -27,6 +28,7 @@ struct SlurmArray {
   int threads = 1;                               // worker --threads
   std::filesystem::path bed_cache;               // worker --bed-cache (empty: none)
   int cpus = 1;                                  // --cpus-per-task
+  int tasks = 1;                                 // --ntasks (given when > 1)
   long time_minutes = 0;                         // --time (0 = not given)
   long mem_mb = 0;                               // --mem (0 = not given)
   int throttle = 0;                              // %N (0 = none)
@@ -44,6 +46,16 @@ std::string limits_note(const std::vector<SlurmArray>& arrays);
 
 // Minutes as Slurm's HH:MM:SS ("00:07:00"; days as more hours).
 std::string slurm_time_text(double minutes);
+
+// A job with a cores rule (JobLaunch::cores > 0, study/job_cores.h) asks
+// Slurm for its own cores: an external code's job as that many tasks of
+// one CPU each (its mpirun -np @@cores@@ finds the ranks in the
+// allocation), a worker's job as one task of that many CPUs (OpenMP
+// threads). Without a rule the shape is left as it is.
+void apply_job_cores(SlurmArray& a, const JobLaunch& job);
+
+// Jobs of two shapes may share one array: every directive is the same.
+bool same_array_shape(const SlurmArray& a, const SlurmArray& b);
 
 std::string array_script(const std::filesystem::path& worker, const SlurmArray& a,
                          const std::vector<std::string>& setup);

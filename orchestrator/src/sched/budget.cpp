@@ -8,8 +8,10 @@ std::optional<std::size_t> pick_next_job(const std::vector<QueuedJob>& queued, c
                                          const BudgetPolicy& policy, HeadReservation& reservation) {
   if (queued.empty() || in_use.jobs >= policy.max_jobs) return std::nullopt;
   const auto fits = [&](const QueuedJob& j) {
-    return policy.memory_budget_bytes <= 0 || in_use.jobs == 0 ||
-           in_use.memory_bytes + j.memory_bytes <= policy.memory_budget_bytes;
+    if (in_use.jobs == 0) return true;
+    const bool memory = policy.memory_budget_bytes <= 0 || in_use.memory_bytes + j.memory_bytes <= policy.memory_budget_bytes;
+    const bool cores = policy.cores <= 0 || in_use.cores + j.cores <= policy.cores;
+    return memory && cores;
   };
   std::size_t head = 0;
   for (std::size_t i = 1; i < queued.size(); ++i)

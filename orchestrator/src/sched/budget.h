@@ -4,8 +4,10 @@
 //
 //   need(job)  = the worker's estimate job_memory_estimate_bytes(cells)
 //                (job/memory_estimate.h; the one model plan/validate use)
-//   fits(job)  = in_use + need(job) ≤ budget, or nothing runs (a job larger
-//                than the budget runs alone, never beside another)
+//   fits(job)  = in_use + need(job) ≤ budget, and cores_in_use + cores(job)
+//                ≤ the pool's cores, or nothing runs (a job larger than the
+//                budget, or needing more cores than the pool has, runs
+//                alone, never beside another)
 //   head       = the queued job with the largest need (ties: queue order)
 //
 // Rule (largest first where it fits, backfill with a bounded reservation):
@@ -30,17 +32,20 @@ namespace gridfree {
 struct QueuedJob {
   long long job_id = 0;
   double memory_bytes = 0;  // need(job)
+  int cores = 1;            // cores(job) (study/job_cores.h)
 };
 
 struct BudgetUse {
   double memory_bytes = 0;  // sum of need over running jobs
   int jobs = 0;
+  int cores = 0;            // sum of cores over running jobs
 };
 
 struct BudgetPolicy {
   double memory_budget_bytes = 0;  // 0 = no memory budget (e.g. Slurm places the jobs)
   int max_jobs = 1;                // -j
   int max_head_skips = 1;          // backfills allowed past a waiting head
+  int cores = 0;                   // the pool's cores; 0 = not counted (Slurm places the jobs)
 };
 
 // What the rule remembers between calls: the head that waits and how many

@@ -54,7 +54,8 @@ std::vector<std::array<long long, 3>> queued_sizes(Store& store) {
 
 }  // namespace
 
-std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study, const NeedOf& need) {
+std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study, const NeedOf& need,
+                                   const CoresOf& cores) {
   const std::vector<std::array<long long, 3>> sizes = queued_sizes(store);
   std::vector<long long> studies = store.active_studies();
   if (study) studies.erase(std::remove_if(studies.begin(), studies.end(), [&](long long id) { return id != *study; }),
@@ -70,6 +71,7 @@ std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study,
     long long study, cells, id;
     std::array<int, 3> size;
     double need;
+    int cores;
   };
   std::vector<Row> rows;
   for (long long id : studies)
@@ -79,7 +81,8 @@ std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study,
       if (!first.step()) continue;
       const std::array<int, 3> cells{static_cast<int>(z[0]), static_cast<int>(z[1]), static_cast<int>(z[2])};
       const long long job = first.as_int(0);
-      rows.push_back({id, z[0] * z[1] * z[2], job, cells, need ? need(id, job, cells) : job_memory_estimate_bytes(cells)});
+      rows.push_back({id, z[0] * z[1] * z[2], job, cells, need ? need(id, job, cells) : job_memory_estimate_bytes(cells),
+                      cores ? cores(id, cells) : 1});
     }
   // An unknown need runs alone: the smallest such job first, so that its
   // measured peak gives the others an estimate soonest.
@@ -91,7 +94,7 @@ std::vector<QueuedJob> queued_jobs(Store& store, std::optional<long long> study,
     return a.id < b.id;
   });
   std::vector<QueuedJob> out;
-  for (const auto& r : rows) out.push_back({r.id, r.need});
+  for (const auto& r : rows) out.push_back({r.id, r.need, r.cores});
   return out;
 }
 
@@ -101,8 +104,9 @@ double counted_need(double need_bytes, const BudgetPolicy& policy) {
 
 std::optional<ClaimedJob> claim_within_budget(Store& store, std::optional<long long> study, const std::string& owner,
                                               const BudgetUse& in_use, const BudgetPolicy& policy,
-                                              HeadReservation& reservation, const NeedOf& need) {
-  auto queued = queued_jobs(store, study, need);
+                                              HeadReservation& reservation, const NeedOf& need,
+                                              const CoresOf& cores) {
+  auto queued = queued_jobs(store, study, need, cores);
   for (auto& q : queued) q.memory_bytes = counted_need(q.memory_bytes, policy);
   const auto pick = pick_next_job(queued, in_use, policy, reservation);
   if (!pick) return std::nullopt;

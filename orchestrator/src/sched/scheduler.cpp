@@ -19,6 +19,9 @@
 #include "sched/external_result.h"
 #include "sched/job_timeout.h"
 #include "study/cost_model.h"
+#include "study/format_number.h"
+#include "study/job_cores.h"
+#include "study/study_plan.h"
 #include "sched/outcome.h"
 #include "sched/progress_tally.h"
 #include "sched/report_pacer.h"
@@ -33,12 +36,14 @@ struct InFlight {
   ClaimedJob job;
   std::string label;
   double memory_bytes = 0;  // need(job), reserved while it runs (sched/budget.h)
+  int cores = 1;            // cores(job), reserved while it runs
 };
 
 BudgetUse budget_use(const std::map<long long, InFlight>& running) {
   BudgetUse u;
   for (const auto& [id, f] : running) {
     u.memory_bytes += f.memory_bytes;
+    u.cores += f.cores;
     ++u.jobs;
   }
   return u;
@@ -128,15 +133,38 @@ ProgressTally progress_tally(Store& store, const SchedulerOptions& o) {
   return ProgressTally(std::move(sources));
 }
 
+// cores(job): the study's rule (study/job_cores.h) capped by the pool's
+// cores, or by the threads per job under Slurm; the threads per job when
+// the study has no rule.
+int cores_of_job(const SchedulerOptions& o, const StudyFacts& facts, const std::array<int, 3>& cells) {
+  if (facts.cores.empty()) return o.threads_per_job;
+  const int cap = o.cores > 0 ? o.cores : o.threads_per_job;
+  const double n = static_cast<double>(cells[0]) * cells[1] * cells[2];
+  try {
+    if (const auto c = job_cores(facts.cores, n, cap)) return *c;
+  } catch (const std::exception&) {
+  }
+  // Validation refuses a rule that is not a number on one of the study's
+  // grids; a definition stored before that check falls back, loudly.
+  spdlog::warn("cores '{}' is not a finite number at {} cells; the job gets {} thread(s)", facts.cores, n,
+               o.threads_per_job);
+  return o.threads_per_job;
+}
+
 // A job's wall-clock limit: --timeout when given (0 = none), else the
 // study's timeout_s, else the default derived from the cost model (an
 // external job: from its estimate, `cost`).
 double job_timeout_s(const SchedulerOptions& o, const StudyFacts& facts, const ClaimedJob& job,
-                     const std::optional<ExternalJobCost>& cost) {
+                     const std::optional<ExternalJobCost>& cost, int cores) {
   if (o.timeout_s >= 0) return o.timeout_s;
   if (facts.timeout_s) return *facts.timeout_s;
   if (cost) return external_job_timeout_s(*cost);
-  return default_job_timeout_s(job.cells, o.threads_per_job, apriori_cost_ratio(job.spec, job.cells).ratio);
+  return default_job_timeout_s(job.cells, cores, apriori_cost_ratio(job.spec, job.cells).ratio);
+}
+
+// "0.233 s" below a minute (a small external job's time), else as the plan writes it.
+std::string cpu_seconds_text(double s) {
+  return std::isfinite(s) && s < 60 ? format_number("%.3g", s) + " s" : human_seconds(s);
 }
 
 // "memory unknown (...)": why an external job's memory is not counted.
@@ -181,13 +209,17 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
                                const std::vector<ClaimedJob>& adopted) {
   SchedulerSummary sum;
   std::map<long long, InFlight> running;
-  const BudgetPolicy policy{o.memory_budget_bytes, o.workers, std::max(1, o.workers)};
+  const BudgetPolicy policy{o.memory_budget_bytes, o.workers, std::max(1, o.workers), o.cores};
   StudyFactsCache facts(store);
   ExternalEstimates estimates(store, facts);
   for (const auto& job : adopted)
-    running.emplace(job.job_id, InFlight{job, job_label(store, job), counted_need(estimates.need(job), policy)});
+    running.emplace(job.job_id, InFlight{job, job_label(store, job), counted_need(estimates.need(job), policy),
+                                         cores_of_job(o, facts.of(job.study_id), job.cells)});
   const NeedOf need = [&estimates](long long study_id, long long job_id, const std::array<int, 3>& cells) {
     return estimates.need(study_id, job_id, cells);
+  };
+  const CoresOf cores = [&o, &facts](long long study_id, const std::array<int, 3>& cells) {
+    return cores_of_job(o, facts.of(study_id), cells);
   };
   HeadReservation reservation;
   ProgressTally tally = progress_tally(store, o);
@@ -238,21 +270,29 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     if (o.stop_requested()) break;
     // 1. start while there is capacity
     while (static_cast<int>(running.size()) < o.workers && !o.stop_requested()) {
-      auto job = claim_within_budget(store, o.study, o.owner, budget_use(running), policy, reservation, need);
+      auto job = claim_within_budget(store, o.study, o.owner, budget_use(running), policy, reservation, need, cores);
       if (!job) break;
       const std::optional<ExternalJobCost> cost = estimates.of(*job);
       InFlight f{*job, job_label(store, *job),
-                 counted_need(cost ? cost->memory_bytes : job_memory_estimate_bytes(job->cells), policy)};
+                 counted_need(cost ? cost->memory_bytes : job_memory_estimate_bytes(job->cells), policy),
+                 cores_of_job(o, facts.of(job->study_id), job->cells)};
+      if (!facts.of(job->study_id).cores.empty())
+        spdlog::info("{}: {} core(s) (cores = {}, at most {})", f.label, f.cores, facts.of(job->study_id).cores,
+                     o.cores > 0 ? o.cores : o.threads_per_job);
       if (o.memory_budget_bytes > 0 && cost && std::isnan(cost->memory_bytes))
         spdlog::info("{}: {}: it runs alone within the memory budget", f.label, unknown_memory_note(*cost));
       else if (o.memory_budget_bytes > 0 && f.memory_bytes > o.memory_budget_bytes)
         spdlog::warn("{}: its estimated memory {} exceeds the memory budget {}; it runs alone", f.label,
                      memory_text(f.memory_bytes), memory_text(o.memory_budget_bytes));
+      else if (cost)  // where an external job's estimates come from (study/external_cost.h)
+        spdlog::info("{}: estimated memory {} ({}); CPU {} ({})", f.label, memory_text(cost->memory_bytes),
+                     cost->memory_basis, cpu_seconds_text(cost->cpu_s), cost->basis);
       JobLaunch launch;
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;
-      launch.threads = o.threads_per_job;
-      launch.timeout_s = job_timeout_s(o, facts.of(job->study_id), *job, cost);
+      launch.threads = f.cores;
+      if (!facts.of(job->study_id).cores.empty()) launch.cores = f.cores;
+      launch.timeout_s = job_timeout_s(o, facts.of(job->study_id), *job, cost, f.cores);
       launch.cells = job->cells;
       if (cost) {  // an external code: gridfree's model does not describe it (exec/executor.h)
         launch.external = true;

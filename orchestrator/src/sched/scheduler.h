@@ -30,6 +30,11 @@ struct SchedulerOptions {
   std::optional<long long> study;   // run: this study only; daemon: nullopt (all)
   int workers = 1;                  // jobs at once (-j)
   int threads_per_job = 1;          // --threads of each worker (cores / j, at least 1)
+  // The pool's cores (local): a job starts only when the cores of the
+  // running jobs plus its own fit (sched/budget.h), and a study's cores
+  // rule (study/job_cores.h) is capped by them; 0 = not counted (Slurm,
+  // where the rule is capped by threads_per_job, the --cpus-per-task).
+  int cores = 0;
   // Memory budget (sched/budget.h): a job starts only when the estimates of
   // the running jobs plus its own fit; 0 = none (Slurm places the jobs).
   double memory_budget_bytes = 0;

@@ -17,6 +17,7 @@ struct StudyFacts {
   std::optional<double> timeout_s;  // the definition's timeout_s
   bool adaptive = false;            // adaptive grids (study/adaptive_grids.h)
   bool external = false;            // its cases are external (docs/EXTERNAL.md)
+  std::string cores;                // the definition's cores expression (study/job_cores.h); "" = none
   std::map<std::string, DeclaredCost> external_costs;  // external cases' declared cost (sched/external_result.h)
 };
 

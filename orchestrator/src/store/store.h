@@ -35,7 +35,11 @@ struct SubmitResult {
   bool jobs_changed = false;     // replaced because an external study's jobs changed (template, version)
   bool uncancelled = false;      // the stored study was cancelled and is queued again
   std::size_t jobs_requeued = 0; // its cancelled jobs queued again
-  std::vector<std::string> jobs_removed;  // hashes of jobs no study needs any more
+  // Hashes of the jobs the replaced study linked that no study links now:
+  // kept with their results and run folders, reusable (a queued one is
+  // cancelled: nothing needs it run); `gridfree gc` removes them
+  // (store/unneeded_jobs.h).
+  std::vector<std::string> jobs_unneeded;
 };
 
 struct ClaimedJob {
@@ -138,10 +142,12 @@ class Store {
   void record_recollected(long long job_id, const ResultRow& r);
 
   // Removes a study: its series, extrapolations, uncertainties, job links
-  // and events; then every job that no study links any more, with its
-  // result (jobs shared with other studies stay). Throws InputError while
-  // one of its jobs is running. Returns the removed jobs' hashes (their run
-  // folders can go too), or nullopt when there is no such study.
+  // and events; then those of its jobs that no study links any more, with
+  // their results (jobs shared with other studies stay, and so do jobs
+  // other studies left unneeded: `gridfree gc` removes those). Throws
+  // InputError while one of its jobs is running. Returns the removed jobs'
+  // hashes (their run folders can go too), or nullopt when there is no
+  // such study.
   std::optional<std::vector<std::string>> delete_study(const std::string& name);
 
   std::optional<long long> study_id(const std::string& name);
@@ -232,7 +238,7 @@ class Store {
 
  private:
   void remove_study_rows(long long study_id, const std::string& name);  // inside a transaction
-  std::vector<std::string> remove_orphan_jobs();                         // inside a transaction
+  std::vector<long long> study_job_ids(long long study_id);
 
   std::filesystem::path file_;
   Database db_;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Store: removing a study (gridfree delete, run --replace) and collecting
-// the jobs no study needs any more.
+// Store: removing a study (gridfree delete, run --replace) and, for
+// delete, those of its jobs no other study uses (store/unneeded_jobs.h).
 #include "core/input_error.h"
 #include "store/store.h"
+#include "store/unneeded_jobs.h"
 
 namespace gridfree {
 
@@ -26,28 +27,21 @@ void Store::remove_study_rows(long long study_id, const std::string& name) {
   for (const char* sql : per_series) db_.prepare(sql).bind_all(study_id).run();
 }
 
-std::vector<std::string> Store::remove_orphan_jobs() {
-  // Orphans: jobs no study links (never running: a running job's study
-  // cannot be removed, and a job is linked before it can be claimed).
-  const char* orphans = "SELECT id FROM jobs WHERE id NOT IN (SELECT job_id FROM study_jobs)";
-  std::vector<std::string> hashes;
-  auto list = db_.prepare(std::string("SELECT job_hash FROM jobs WHERE id IN (") + orphans + ")");
-  while (list.step()) hashes.push_back(list.as_text(0));
-  db_.prepare(std::string("DELETE FROM uncertainties WHERE job_id IN (") + orphans + ")").run();
-  db_.prepare(std::string("DELETE FROM results WHERE job_id IN (") + orphans + ")").run();
-  // their events too ('result' and the like carry only the job id, no study id),
-  // or they would dangle and attach to a later job given the same id
-  db_.prepare(std::string("DELETE FROM events WHERE job_id IN (") + orphans + ")").run();
-  db_.prepare(std::string("DELETE FROM jobs WHERE id IN (") + orphans + ")").run();
-  return hashes;
+std::vector<long long> Store::study_job_ids(long long study_id) {
+  std::vector<long long> ids;
+  auto st = db_.prepare("SELECT DISTINCT job_id FROM study_jobs WHERE study_id = ? ORDER BY job_id");
+  st.bind_all(study_id);
+  while (st.step()) ids.push_back(st.as_int(0));
+  return ids;
 }
 
 std::optional<std::vector<std::string>> Store::delete_study(const std::string& name) {
   Transaction tx(db_);
   const auto id = study_id(name);
   if (!id) return std::nullopt;
+  const std::vector<long long> jobs = study_job_ids(*id);
   remove_study_rows(*id, name);
-  auto removed = remove_orphan_jobs();
+  auto removed = remove_unlinked_jobs(db_, jobs);
   db_.prepare("INSERT INTO events(kind, message) VALUES ('delete', ?)")
       .bind_all("study '" + name + "' deleted; " + std::to_string(removed.size()) + " job(s) no other study uses removed")
       .run();

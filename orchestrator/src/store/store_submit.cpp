@@ -8,6 +8,7 @@
 #include "store/store_ensembles.h"
 #include "store/store.h"
 #include "store/store_alignment.h"
+#include "store/unneeded_jobs.h"
 
 namespace gridfree {
 namespace {
@@ -58,6 +59,7 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
   // Stored as JSON text; compared as JSON values (key order, 20 vs 20.0 do not matter).
   const std::string definition = study.definition.dump();
   SubmitResult out;
+  std::vector<long long> old_jobs;  // the replaced study's
   // An external job serves each of its case's series (one per quantity).
   out.jobs_total = study.external() ? expanded_job_hashes(expanded).size() : expanded.jobs.size();
   Transaction tx(db_);
@@ -85,6 +87,7 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     if (changed || jobs_changed) {
       const long long old_id = st.as_int(0);
       st.reset();
+      old_jobs = study_job_ids(old_id);
       remove_study_rows(old_id, study.name);
       out.replaced = true;
       out.jobs_changed = jobs_changed;
@@ -166,7 +169,8 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
   store_series_transfer(db_, series_ids, expanded);                                 // step 5 columns
   out.jobs_new += store_alignment_jobs(db_, out.study_id, series_ids, expanded);  // alignment variants
   out.jobs_total += expanded.alignment.size();
-  if (out.replaced) out.jobs_removed = remove_orphan_jobs();
+  // Jobs only the replaced study used stay, reusable (store/unneeded_jobs.h).
+  if (out.replaced) out.jobs_unneeded = keep_unlinked_jobs(db_, old_jobs);
   db_.prepare("INSERT INTO events(study_id, kind, message) VALUES (?, 'submit', ?)")
       .bind_all(out.study_id, std::to_string(out.jobs_total) + " jobs, " + std::to_string(out.jobs_new) +
                                   " new, " + std::to_string(out.jobs_reused) + " already done")

@@ -7,10 +7,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "core/json_fields.h"
 #include "job/template_hash.h"
@@ -37,25 +39,62 @@ std::string quote_for_shell(const std::string& s) {
   return out + "'";
 }
 
+// The last non-empty lines of a command's stderr (at most 3, " | "
+// between them, the end of at most 300 characters).
+std::string stderr_tail_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    const auto first = line.find_first_not_of(" \t");
+    if (first != std::string::npos) lines.push_back(line.substr(first));
+  }
+  std::string out;
+  for (std::size_t i = lines.size() > 3 ? lines.size() - 3 : 0; i < lines.size(); ++i)
+    out += (out.empty() ? "" : " | ") + lines[i];
+  if (out.size() > 300) out = "…" + out.substr(out.size() - 300);
+  return out;
+}
+
 // The first line of `command`'s output run by /bin/sh in `dir`; the reason
-// it failed otherwise.
+// it failed otherwise, with the tail of its stderr.
 std::pair<std::string, std::string> first_line_of_command(const std::string& command, const std::filesystem::path& dir) {
-  const std::string full = "cd " + quote_for_shell(dir.string()) + " && { " + command + "\n} 2>/dev/null";
+  std::error_code ec;
+  std::string err_path = (std::filesystem::temp_directory_path(ec) / "gridfree-version-XXXXXX").string();
+  char* err_name = err_path.data();
+  const int err_fd = ::mkstemp(err_name);
+  if (err_fd < 0) return {"", "could not create a file for its stderr"};
+  ::close(err_fd);
+  const std::string full =
+      "cd " + quote_for_shell(dir.string()) + " && { " + command + "\n} 2>" + quote_for_shell(err_name);
   FILE* pipe = ::popen(full.c_str(), "r");
-  if (pipe == nullptr) return {"", "could not start /bin/sh"};
+  if (pipe == nullptr) {
+    ::unlink(err_name);
+    return {"", "could not start /bin/sh"};
+  }
   std::string out;
   std::array<char, 4096> buf{};
   std::size_t n = 0;
   while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0)
     if (out.size() < 65536) out.append(buf.data(), n);
   const int status = ::pclose(pipe);
+  std::string err;
+  {
+    std::ifstream in(err_name, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    err = text.str().substr(0, 65536);
+  }
+  ::unlink(err_name);
+  const std::string tail = stderr_tail_of(err);
+  const std::string with_stderr = tail.empty() ? " (nothing on stderr)" : " (stderr: " + tail + ")";
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     return {"", "the command failed (" +
                     (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status)) : std::string("killed")) +
-                    ")"};
+                    ")" + with_stderr};
   std::string line = out.substr(0, out.find('\n'));
   while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
-  if (line.empty()) return {"", "the command printed nothing on its first line"};
+  if (line.empty()) return {"", "the command printed nothing on its first line" + with_stderr};
   return {line, ""};
 }
 
@@ -217,7 +256,8 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
   c.template_dir = std::filesystem::absolute(base_dir / tmpl).lexically_normal();
   std::error_code ec;
   if (!std::filesystem::is_directory(c.template_dir, ec)) {
-    problems.add(at + "/template", "template folder '" + tmpl + "' not found");
+    problems.add(at + "/template", "template folder '" + tmpl + "' not found (looked for " + c.template_dir.string() +
+                                       ", relative to the study file's folder)");
   } else {
     try {
       c.template_sha256 = template_sha256(c.template_dir);
@@ -235,11 +275,19 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
   // Variables: grid variables are the study's; derived ones may not shadow them.
   std::set<std::string> defined;
   for (const auto& [n, v] : grids) defined.insert(n);
+  // @@cores@@ is the job's cores (study/job_cores.h), given by the driver.
+  if (grids.count(kExternalCoresPlaceholder) != 0)
+    problems.add_once(child_pointer("/grids/variables", kExternalCoresPlaceholder),
+                      "'cores' is the job's number of cores (@@cores@@, the study's cores rule); name the variable otherwise");
   if (auto v = ext.find("variables"); v != ext.end() && v->is_object())
     for (auto it = v->begin(); it != v->end(); ++it) {
       const std::string where = child_pointer(at + "/variables", it.key());
       if (!valid_external_name(it.key())) {
         problems.add(where, "a variable name is a letter or '_' followed by letters, digits or '_'");
+        continue;
+      }
+      if (it.key() == kExternalCoresPlaceholder) {
+        problems.add(where, "'cores' is the job's number of cores (@@cores@@, the study's cores rule); name the variable otherwise");
         continue;
       }
       if (grids.count(it.key()) != 0) {
@@ -311,6 +359,13 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
       if (it->value("units", "").empty()) problems.add(where + "/units", "units are required (\"1\" for none)");
       c.quantities.push_back({it.key(), it->value("units", ""), it->value("description", "")});
     }
+  if (auto logs = c.collect.find("logs"); logs != c.collect.end() && logs->is_array())
+    for (std::size_t i = 0; i < logs->size(); ++i) {
+      const std::filesystem::path rel = (*logs)[i].get<std::string>();
+      if (rel.is_absolute() || rel.lexically_normal().string().rfind("..", 0) == 0)
+        problems.add(at + "/collect/logs/" + std::to_string(i),
+                     "'" + rel.string() + "' must be a path (or glob) relative to the case folder");
+    }
   if (auto cost = ext.find("cost"); cost != ext.end() && cost->is_object()) {
     if (cost->contains("cpu_s_per_cell")) c.cpu_s_per_cell = (*cost)["cpu_s_per_cell"].get<double>();
     if (cost->contains("mb_per_cell")) c.mb_per_cell = (*cost)["mb_per_cell"].get<double>();
@@ -318,7 +373,9 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
       problems.add(at + "/cost", "per-cell costs need the cells expression (external/cells)");
   }
   if (problems.problems().size() != before) return std::nullopt;
-  check_external_render_files(c, defined, at, problems);
+  std::set<std::string> placeholders = defined;
+  placeholders.insert(kExternalCoresPlaceholder);
+  check_external_render_files(c, placeholders, at, problems);
   if (external_grid_count(grids) > 0) check_external_grids(c, grids, at, problems);
   if (problems.problems().size() != before) return std::nullopt;
   return c;

@@ -21,6 +21,11 @@
 
 namespace gridfree {
 
+// The placeholder the driver fills with the job's cores (--threads of the
+// worker, study/job_cores.h): defined in every rendered file, never a
+// grid or derived variable's name.
+inline constexpr const char* kExternalCoresPlaceholder = "cores";
+
 // Grid variable name → its value on each grid (level i takes the i-th).
 using GridVariables = std::map<std::string, std::vector<double>>;
 

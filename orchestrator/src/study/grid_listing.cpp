@@ -3,6 +3,7 @@
 #include "study/grid_listing.h"
 
 #include "study/format_number.h"
+#include "study/job_cores.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +52,15 @@ std::vector<GridRow> grid_listing(const Study& study) {
       rows.push_back(r);
     }
   }
+  const std::string rule = study_cores_expression(study.definition);
+  if (!rule.empty())
+    for (auto& r : rows) {
+      r.cores_rule = rule;
+      try {
+        r.cores = job_cores(rule, static_cast<double>(std::max<std::uint64_t>(1, r.cell_count)), kUncappedCores);
+      } catch (const std::exception&) {
+      }  // validation refused such a rule before a listing is made
+    }
   return rows;
 }
 
@@ -77,35 +87,54 @@ std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows, do
   return out;
 }
 
+namespace {
+
+// " cores" column text of a row ("" without a rule; "-" when not a number).
+std::string cores_cell(const GridRow& r) {
+  if (r.cores_rule.empty()) return "";
+  char cell[32];
+  std::snprintf(cell, sizeof cell, " %6s", r.cores ? std::to_string(*r.cores).c_str() : "-");
+  return cell;
+}
+
+std::string cores_note(const std::vector<GridRow>& rows) {
+  if (rows.empty() || rows.front().cores_rule.empty()) return "";
+  return "cores = " + rows.front().cores_rule +
+         " per job, at most the pool's cores (the machine's, or -j when larger; under Slurm cpus_per_task)\n";
+}
+
+}  // namespace
+
 std::string grid_listing_table(const std::vector<GridRow>& rows) {
   std::string out;
   char line[256];
+  const std::string cores_head = !rows.empty() && !rows.front().cores_rule.empty() ? "  cores" : "";
   if (!rows.empty() && !rows.front().h_meaning.empty()) {  // external: h as declared, cells
-    std::snprintf(line, sizeof line, "%-16s %5s %13s %12s\n", "case", "grid", "h", "cells");
-    out += line;
+    std::snprintf(line, sizeof line, "%-16s %5s %13s %12s", "case", "grid", "h", "cells");
+    out += line + cores_head + "\n";
     std::vector<std::pair<std::string, std::string>> meanings;  // case → its h, in order
     for (const auto& r : rows) {
       const std::string cells = r.cell_count > 0 ? std::to_string(r.cell_count) : "-";
-      std::snprintf(line, sizeof line, "%-16s %5zu %13.6g %12s\n", r.case_name.c_str(), r.index, r.actual, cells.c_str());
-      out += line;
+      std::snprintf(line, sizeof line, "%-16s %5zu %13.6g %12s", r.case_name.c_str(), r.index, r.actual, cells.c_str());
+      out += line + cores_cell(r) + "\n";
       if (meanings.empty() || meanings.back().first != r.case_name) meanings.emplace_back(r.case_name, r.h_meaning);
     }
     for (const auto& [name, meaning] : meanings) out += "h of " + name + ": " + meaning + "\n";
-    return out;
+    return out + cores_note(rows);
   }
   // "Δ" is two bytes: its columns are one wider in the header.
-  std::snprintf(line, sizeof line, "%-16s %5s %13s %13s %18s %12s\n", "case", "grid", "Δ* requested", "Δ* actual",
+  std::snprintf(line, sizeof line, "%-16s %5s %13s %13s %18s %12s", "case", "grid", "Δ* requested", "Δ* actual",
                 "nx x ny x nz", "cells");
-  out += line;
+  out += line + cores_head + "\n";
   for (const auto& r : rows) {
     const std::string req = r.requested ? format_number("%.4g", *r.requested) : "-";
     const std::string dims =
         std::to_string(r.cells[0]) + " x " + std::to_string(r.cells[1]) + " x " + std::to_string(r.cells[2]);
-    std::snprintf(line, sizeof line, "%-16s %5zu %12s %12.4g %18s %12llu\n", r.case_name.c_str(), r.index, req.c_str(),
+    std::snprintf(line, sizeof line, "%-16s %5zu %12s %12.4g %18s %12llu", r.case_name.c_str(), r.index, req.c_str(),
                   r.actual, dims.c_str(), static_cast<unsigned long long>(r.cell_count));
-    out += line;
+    out += line + cores_cell(r) + "\n";
   }
-  return out;
+  return out + cores_note(rows);
 }
 
 nlohmann::json grid_listing_json(const std::vector<GridRow>& rows) {
@@ -117,6 +146,7 @@ nlohmann::json grid_listing_json(const std::vector<GridRow>& rows) {
                      {"h", r.actual},
                      {"h_meaning", r.h_meaning},
                      {"cell_count", r.cell_count > 0 ? nlohmann::json(r.cell_count) : nlohmann::json(nullptr)}});
+      if (!r.cores_rule.empty()) out.back()["cores"] = r.cores ? nlohmann::json(*r.cores) : nlohmann::json(nullptr);
       continue;
     }
     out.push_back({{"case", r.case_name},
@@ -125,6 +155,7 @@ nlohmann::json grid_listing_json(const std::vector<GridRow>& rows) {
                    {"delta_star", r.actual},
                    {"cells", {r.cells[0], r.cells[1], r.cells[2]}},
                    {"cell_count", r.cell_count}});
+    if (!r.cores_rule.empty()) out.back()["cores"] = r.cores ? nlohmann::json(*r.cores) : nlohmann::json(nullptr);
   }
   return out;
 }

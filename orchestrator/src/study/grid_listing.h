@@ -32,6 +32,10 @@ struct GridRow {
   std::array<int, 3> cells{};
   std::uint64_t cell_count = 0;
   std::string h_meaning;                 // an external case's: its declared h ("h = 1 / N"); `actual` is h
+  // The study's cores rule on this grid before the pool's cap
+  // (study/job_cores.h); nullopt without a rule.
+  std::optional<int> cores;
+  std::string cores_rule;                // the rule, for the table's note
 };
 
 // Where grid `i` of `study` is written: /grids/delta_star/i or
@@ -49,7 +53,8 @@ std::vector<std::string> neighbour_warnings(const std::vector<GridRow>& rows,
                                             double min_ratio = kMinNeighbourRatio);
 
 // An external study's table lists h and cells (no Δ*, no nx x ny x nz),
-// with each case's declared meaning of h below it.
+// with each case's declared meaning of h below it. A study with a cores
+// rule gets a cores column and the rule below the table.
 std::string grid_listing_table(const std::vector<GridRow>& rows);
 nlohmann::json grid_listing_json(const std::vector<GridRow>& rows);
 

@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "core/json_fields.h"
 #include "core/follow_on_problems.h"
+#include "study/study_cores.h"
 #include "study/format_number.h"
 #include "study/grid_listing.h"
 #include "core/schema_validation.h"
@@ -632,6 +633,7 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   parse_alignment(doc, s, problems);  // study_alignment.cpp
   parse_extrapolation(doc, s, problems);
   parse_ensembles(doc, s, problems);
+  if (!problems_under(problems, {"/cases", "/grids", "/cores"})) check_study_cores(doc, s, problems);
   // The checks of whole grids and jobs need sound parts; each runs when the
   // parts it reads are, so independent problems are reported together.
   if (std::any_of(s.cases.begin(), s.cases.end(), [](const StudyCase& c) { return c.doc.contains("external"); })) {

@@ -137,6 +137,75 @@ fs::path fresh_poly_dir(const std::string& name) {
   return dir;
 }
 
+// The jobs' run folders under g.sqlite.runs: <2 hex>/<hash>, each shard non-empty.
+int run_folder_count(const fs::path& runs, bool* empty_shard) {
+  int n = 0;
+  for (const auto& shard : fs::directory_iterator(runs)) {
+    if (!shard.is_directory() || shard.path().filename().string().size() != 2) continue;
+    if (fs::is_empty(shard.path())) *empty_shard = true;
+    for (const auto& d : fs::directory_iterator(shard.path())) n += d.is_directory() ? 1 : 0;
+  }
+  return n;
+}
+
+// Nothing is deleted without being asked (docs/ORCHESTRATOR.md "Unneeded
+// jobs and gc"): a template edit keeps the old jobs with their results and
+// run folders, its revert reuses them and runs nothing; `gc --dry-run`
+// lists them and removes nothing; `gc` removes exactly them, their folders
+// and the shard folders they leave empty.
+TEST(ExternalStudyCli, ATemplateEditAndItsRevertRerunNothingAndGcRemovesOnlyTheUnneeded) {
+  const auto dir = fresh_poly_dir("revert_gc");
+  const auto db = dir / "g.sqlite";
+  const auto runs = dir / "g.sqlite.runs";
+  ASSERT_EQ(run_in(dir, "run study.json -j 2 --db g.sqlite", kRealWorker).exit_code, 0);
+  const std::string original = ext_file_text(dir / "poly/solve.sh");
+  std::string edited = original;
+  edited.replace(edited.find("1 + 0.5 * h"), 1, "2");
+  std::ofstream(dir / "poly/solve.sh") << edited;
+  const CommandRun changed = run_in(dir, "run study.json -j 2 --db g.sqlite", kRealWorker);
+  ASSERT_EQ(changed.exit_code, 0) << changed.err;
+  EXPECT_NE(changed.err.find("5 job(s) no study needs any more kept"), std::string::npos) << changed.err;
+  EXPECT_EQ(lines_of(dir / "runs.txt"), 10);
+  bool empty_shard = false;
+  EXPECT_EQ(run_folder_count(runs, &empty_shard), 10);
+
+  std::ofstream(dir / "poly/solve.sh") << original;  // the edit reverted
+  const CommandRun reverted = run_in(dir, "run study.json -j 2 --db g.sqlite", kRealWorker);
+  ASSERT_EQ(reverted.exit_code, 0) << reverted.err;
+  EXPECT_EQ(lines_of(dir / "runs.txt"), 10) << "the reverted template's jobs were kept: nothing reruns";
+  EXPECT_NE(reverted.err.find("(0 new, 5 already done)"), std::string::npos) << reverted.err;
+  EXPECT_NEAR(query_number(sqlite_query(db, "SELECT f0 FROM extrapolations e JOIN series s ON s.id = e.series_id "
+                                            "WHERE e.chosen = 1 AND s.quantity = 'f'")),
+              1.0, 1e-9);
+
+  const std::string unneeded = "SELECT COUNT(*) FROM jobs WHERE id NOT IN (SELECT job_id FROM study_jobs)";
+  const CommandRun dry = run_in(dir, "gc --dry-run --db g.sqlite", kRealWorker);
+  ASSERT_EQ(dry.exit_code, 0) << dry.err;
+  EXPECT_EQ(dry.out.rfind("would remove 5 job(s) no study needs any more (", 0), 0u) << dry.out;
+  EXPECT_NE(dry.out.find(" poly "), std::string::npos) << dry.out;
+  EXPECT_NE(dry.out.find("KiB"), std::string::npos) << dry.out;  // sizes on disk
+  EXPECT_EQ(sqlite_query(db, unneeded), "5");
+  EXPECT_EQ(sqlite_query(db, "SELECT COUNT(*) FROM jobs"), "10");
+  EXPECT_EQ(run_folder_count(runs, &empty_shard), 10);
+
+  const std::string kept_hashes = sqlite_query(db, "SELECT group_concat(job_hash) FROM (SELECT job_hash FROM jobs "
+                                                   "WHERE id IN (SELECT job_id FROM study_jobs) ORDER BY job_hash)");
+  const CommandRun gc = run_in(dir, "gc --db g.sqlite", kRealWorker);
+  ASSERT_EQ(gc.exit_code, 0) << gc.err;
+  EXPECT_EQ(gc.out.rfind("removed 5 job(s) no study needs any more (", 0), 0u) << gc.out;
+  EXPECT_EQ(sqlite_query(db, unneeded), "0");
+  EXPECT_EQ(sqlite_query(db, "SELECT group_concat(job_hash) FROM (SELECT job_hash FROM jobs ORDER BY job_hash)"),
+            kept_hashes);
+  EXPECT_EQ(run_folder_count(runs, &empty_shard), 5);
+  EXPECT_FALSE(empty_shard) << "a shard folder left empty";
+  std::istringstream kept(kept_hashes);  // the study's own folders are all there
+  for (std::string hash; std::getline(kept, hash, ',');)
+    EXPECT_TRUE(fs::exists(runs / hash.substr(0, 2) / hash / "result.json")) << hash;
+  const CommandRun again = run_in(dir, "run study.json -j 2 --db g.sqlite", kRealWorker);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(lines_of(dir / "runs.txt"), 10);
+}
+
 // Memory of an external job (docs/EXTERNAL.md "Cost, timeouts, memory"):
 // never gridfree's own solver model. Without a declared or measured figure
 // the first job runs alone within the memory budget, the smallest grid
@@ -150,6 +219,18 @@ TEST(ExternalStudyCli, MemoryIsUnknownUntilMeasuredAndPlanShowsTheMeasuredEstima
   EXPECT_EQ(ext_first_line(dir / "runs.txt"), "run h=0.25");
   EXPECT_NE(first.err.find("memory unknown (no cost.mb_per_cell and no finished job of the case yet): it runs alone"),
             std::string::npos)
+      << first.err;
+  // One measured size says nothing above it: the next grid (N = 6, 36 cells)
+  // probes alone too; from two sizes on, each start says where its estimates come from.
+  {
+    std::ifstream runs(dir / "runs.txt");
+    std::string line;
+    std::getline(runs, line);
+    std::getline(runs, line);
+    EXPECT_EQ(line.rfind("run h=0.1666", 0), 0u) << line;
+  }
+  EXPECT_NE(first.err.find("memory unknown above 16 cells: one measured size"), std::string::npos) << first.err;
+  EXPECT_NE(first.err.find("(history: peak memory of 2 finished job(s) of the case at 2 sizes"), std::string::npos)
       << first.err;
   const double peak = query_number(sqlite_query(dir / "g.sqlite", "SELECT MAX(peak_rss_mb) FROM results"));
   ASSERT_GT(peak, 0);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `gridfree` study life cycle with the fake worker (tests/fixtures/
 // fake_worker.sh): a changed study under a stored name is refused with the
-// way out (--replace), `run --replace` reuses finished identical jobs,
+// way out (--replace), `run --replace` reuses finished identical jobs and
+// keeps the ones no study needs any more,
 // `delete` removes a study and the jobs only it used (database and run
 // folders) but keeps shared ones, a study's own timeout_s kills a hanging
 // job, and `plan` lists every grid and warns about close neighbours.
@@ -61,7 +62,12 @@ TEST(StudyLifecycle, ChangedStudyNeedsReplaceAndReusesFinishedJobs) {
   const CommandRun replaced = gridfree_in(dir, "run s2.json -j 2 --db g.sqlite --replace");
   EXPECT_EQ(replaced.exit_code, 0) << replaced.err;
   EXPECT_NE(replaced.err.find("1 new, 3 already done"), std::string::npos) << replaced.err;
-  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "4");  // the Δ* 2.5 job went
+  // The Δ* 2.5 job stays, needed by no study, until gc (its result and folder too).
+  EXPECT_NE(replaced.err.find("1 job(s) no study needs any more kept"), std::string::npos) << replaced.err;
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs"), "5");
+  EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM jobs WHERE id NOT IN (SELECT job_id FROM study_jobs) "
+                                           "AND status = 'done'"),
+            "1");
   EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT COUNT(*) FROM studies"), "1");
   EXPECT_EQ(sqlite_query(dir / "g.sqlite", "SELECT MIN(delta_star_nominal) FROM v_results"), "2.0");
   EXPECT_EQ(

@@ -122,6 +122,32 @@ TEST(ExternalFakeSolver, EachFailureRuleWithItsReason) {
   }
 }
 
+// A command that sends a program's output to a log of its own (`blockMesh
+// > log.blockMesh 2>&1 && ...`): the failure pattern is found there, as in
+// every log.* / *.log file of the case, and the reason carries stderr's
+// tail; a file of another name is searched when collect.logs names it.
+TEST(ExternalFakeSolver, FailurePatternInALogTheCommandNamesItself) {
+  auto r = run_fake("own_log", fake_job(kFakeTemplate, 11, 4));
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_EQ(r.result.value("status", ""), "failed");
+  EXPECT_EQ(fake_reason(r),
+            "failure pattern \"FOAM FATAL\" at line 3 of log.mesher: --> FOAM FATAL ERROR: | cannot find file "
+            "\"system/blockMeshDict\" (stderr: mesher: setting up | mesher: giving up)");
+
+  auto job = fake_job(kFakeTemplate, 12, 4);
+  r = run_fake("unnamed_file", job);
+  EXPECT_EQ(fake_reason(r), "exit code 1") << "run/solver.out is no log by its name and not named";
+  job["case"]["external"]["collect"]["logs"] = {"run/*.out"};
+  r = run_fake("named_file", job);
+  EXPECT_EQ(fake_reason(r),
+            "failure pattern \"FOAM FATAL\" at line 2 of run/solver.out: --> FOAM FATAL ERROR: Maximum number of "
+            "iterations exceeded");
+  job["case"]["external"]["collect"]["logs"] = {"../outside.log"};
+  r = run_fake("outside_log", job);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("/case/external/collect/logs/0"), std::string::npos) << r.err;
+}
+
 TEST(ExternalFakeSolver, CommandNotFoundOrNotExecutable) {
   auto job = fake_job(kFakeTemplate, 0, 4);
   job["case"]["external"]["command"] = {"no_such_solver_gridfree"};

@@ -188,6 +188,31 @@ TEST_F(SlurmCluster, ArraysGiveTheLocalExecutorsResultsAndQuoteEveryPath) {
             slurm_dp);
 }
 
+// A cores rule (study/job_cores.h): the finest grid (12 x 80 x 4 = 3 840
+// cells, 2.02 by the rule) gets 2 cores, the others (480, 800, 1 647) one;
+// each core count is its own array, and Slurm allocated each job its cores.
+TEST_F(SlurmCluster, ACoresRuleGivesEachArrayItsJobsCores) {
+  const auto file = study("cores", {"ok_a"});
+  auto doc = nlohmann::json::parse(std::ifstream(file));
+  doc["cores"] = "max(1, cells / 1900)";
+  std::ofstream(file) << doc.dump(2);
+  const auto r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote(db().string()) +
+                          " --executor slurm --cpus-per-task 2 -j 4");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(count("SELECT COUNT(*) FROM results WHERE status = 'converged'"), 4);
+  int scripts = 0;
+  for (const auto& e : fs::directory_iterator(work_ / "g.sqlite.runs" / "slurm"))
+    scripts += e.path().extension() == ".sbatch";
+  EXPECT_EQ(scripts, 2);
+  std::map<std::string, int> by_procs;  // Slurm's own record of each job's CPUs
+  for (const auto& l : lines_of(cluster_ / "jobcomp.log")) {
+    const auto at = l.find("ProcCnt=");
+    if (at != std::string::npos) ++by_procs[l.substr(at + 8, l.find(' ', at) - at - 8)];
+  }
+  EXPECT_EQ(by_procs["1"], 3);
+  EXPECT_EQ(by_procs["2"], 1);
+}
+
 TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
   const auto file = study("adopt", {"ok_a", "ok_b"});
   const std::string args =

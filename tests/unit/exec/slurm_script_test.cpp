@@ -3,6 +3,7 @@
 // worker that records its arguments, so the quoting is checked by a shell.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 
@@ -114,6 +115,58 @@ TEST(SlurmScript, TheLimitsNoteSaysWhereTimeAndMemoryCameFrom) {
   EXPECT_EQ(limits_note({given}),
             "time limit 01:30:00 from the settings (--time / time_minutes); memory the cluster's default");
   EXPECT_EQ(slurm_time_text(1450.5), "24:10:30");
+}
+
+// A cores rule (study/job_cores.h): each array asks for its jobs' own cores,
+// an external code's as MPI tasks, the worker's as CPUs of one task; jobs
+// of different cores never share an array.
+TEST(SlurmScript, CoresRuleGivesEachArrayItsTasksOrCpus) {
+  JobLaunch external;
+  external.external = true;
+  external.threads = 4;
+  external.cores = 4;
+  SlurmArray mpi;
+  mpi.run_dirs = {"/a"};
+  apply_job_cores(mpi, external);
+  EXPECT_EQ(mpi.tasks, 4);
+  EXPECT_EQ(mpi.cpus, 1);
+  EXPECT_EQ(mpi.threads, 4);
+  const auto c = sbatch_command(mpi, SlurmSettings{}, "/s.sbatch", "/log");
+  EXPECT_NE(std::find(c.begin(), c.end(), "--ntasks=4"), c.end());
+  EXPECT_NE(std::find(c.begin(), c.end(), "--cpus-per-task=1"), c.end());
+
+  JobLaunch worker;
+  worker.threads = 2;
+  worker.cores = 2;
+  SlurmArray omp;
+  omp.run_dirs = {"/b"};
+  apply_job_cores(omp, worker);
+  EXPECT_EQ(omp.tasks, 1);
+  EXPECT_EQ(omp.cpus, 2);
+  const auto w = sbatch_command(omp, SlurmSettings{}, "/s.sbatch", "/log");
+  EXPECT_NE(std::find(w.begin(), w.end(), "--cpus-per-task=2"), w.end());
+  EXPECT_EQ(std::find_if(w.begin(), w.end(), [](const std::string& x) { return x.rfind("--ntasks", 0) == 0; }),
+            w.end());
+
+  // Without a rule the shape stays (the settings' --cpus-per-task).
+  JobLaunch plain;
+  plain.threads = 1;
+  SlurmArray fixed;
+  fixed.cpus = 8;
+  apply_job_cores(fixed, plain);
+  EXPECT_EQ(fixed.cpus, 8);
+  EXPECT_EQ(fixed.tasks, 1);
+
+  // Grouping: one array per core count.
+  JobLaunch one = external;
+  one.threads = one.cores = 1;
+  SlurmArray mpi1;
+  apply_job_cores(mpi1, one);
+  EXPECT_FALSE(same_array_shape(mpi, mpi1));
+  SlurmArray mpi4b;
+  apply_job_cores(mpi4b, external);
+  EXPECT_TRUE(same_array_shape(mpi, mpi4b));
+  EXPECT_FALSE(same_array_shape(mpi, omp));
 }
 
 }  // namespace

@@ -53,6 +53,21 @@ TEST(ExternalClassify, FailurePatternBeforeExitCode) {
             "failure pattern \"FOAM FATAL\" at line 12 of log.blockMesh: --> FOAM FATAL IO ERROR: | keyword N undefined");
 }
 
+// The failed command's stderr follows the pattern's line, unless that
+// line is stderr's own (said once).
+TEST(ExternalClassify, FailurePatternWithTheTailOfStderr) {
+  auto s = clean_run();
+  s.exit = ExternalExit{1, std::nullopt};
+  s.stderr_tail = "mpirun: rank 0 exited | aborting";
+  s.failure = FailureSighting{"FOAM FATAL", "log.blockMesh", 12, "--> FOAM FATAL ERROR: | cannot find file"};
+  EXPECT_EQ(classify_external(s).reason,
+            "failure pattern \"FOAM FATAL\" at line 12 of log.blockMesh: --> FOAM FATAL ERROR: | cannot find file "
+            "(stderr: mpirun: rank 0 exited | aborting)");
+  s.failure = FailureSighting{"FOAM FATAL", "stderr.log", 1, "--> FOAM FATAL ERROR: | cannot find file"};
+  EXPECT_EQ(classify_external(s).reason,
+            "failure pattern \"FOAM FATAL\" at line 1 of stderr.log: --> FOAM FATAL ERROR: | cannot find file");
+}
+
 TEST(ExternalClassify, FailurePatternEvenWithExitZero) {
   auto s = clean_run();
   s.failure = FailureSighting{"FOAM FATAL", "stdout.log", 2, "FOAM FATAL ERROR"};

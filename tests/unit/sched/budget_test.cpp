@@ -78,5 +78,49 @@ TEST(MemoryBudget, ReadsMemAvailableAndTheFlag) {
   EXPECT_GT(resolve_memory_budget("").bytes, 0.0);
 }
 
+// Cores (study/job_cores.h) packed like memory: the cores of the running
+// jobs plus the job's own never exceed the pool's; a job needing them all
+// runs alone.
+TEST(Budget, TwoOneCoreJobsRunTogetherOnTwoCoresAndATwoCoreJobAlone) {
+  const BudgetPolicy p{10 * kGiB, 2, 2, 2};  // -j 2 on 2 cores; memory never binds here
+  HeadReservation r;
+  const std::vector<QueuedJob> ones = {{1, 1 * kGiB, 1}, {2, 1 * kGiB, 1}};
+  auto pick = pick_next_job(ones, {}, p, r);
+  ASSERT_TRUE(pick);
+  const std::vector<QueuedJob> second = {ones[1]};
+  pick = pick_next_job(second, {1 * kGiB, 1, 1}, p, r);  // one 1-core job runs: the second fits
+  ASSERT_TRUE(pick);
+  EXPECT_EQ(second[*pick].job_id, 2);
+  // A 2-core job waits while a 1-core job runs (nothing smaller to backfill)...
+  const std::vector<QueuedJob> two = {{3, 2 * kGiB, 2}};
+  EXPECT_FALSE(pick_next_job(two, {1 * kGiB, 1, 1}, p, r));
+  // ...starts on an idle pool, and nothing starts beside it.
+  pick = pick_next_job(two, {}, p, r);
+  ASSERT_TRUE(pick);
+  EXPECT_FALSE(pick_next_job(ones, {2 * kGiB, 1, 2}, p, r));
+  // A job needing more cores than the pool has runs alone too.
+  const std::vector<QueuedJob> four = {{4, 1 * kGiB, 4}};
+  EXPECT_TRUE(pick_next_job(four, {}, p, r));
+  EXPECT_FALSE(pick_next_job(four, {1 * kGiB, 1, 1}, p, r));
+}
+
+TEST(Budget, CoresBackfillPastAWaitingHead) {
+  // 4 cores; a 3-core job runs; the head (largest memory) needs 2 cores and
+  // waits; a 1-core job fits beside it and is started past the head.
+  const BudgetPolicy p{100 * kGiB, 4, 1, 4};
+  HeadReservation r;
+  const std::vector<QueuedJob> q = {{1, 8 * kGiB, 2}, {2, 1 * kGiB, 1}};
+  const auto pick = pick_next_job(q, {8 * kGiB, 1, 3}, p, r);
+  ASSERT_TRUE(pick);
+  EXPECT_EQ(q[*pick].job_id, 2);
+  EXPECT_EQ(r.skips, 1);
+  // Without a core count (Slurm places the jobs) only memory and -j count.
+  const BudgetPolicy slurm{0, 4, 1, 0};
+  HeadReservation r2;
+  const auto any = pick_next_job(q, {0, 1, 3}, slurm, r2);
+  ASSERT_TRUE(any);
+  EXPECT_EQ(q[*any].job_id, 1);
+}
+
 }  // namespace
 }  // namespace gridfree

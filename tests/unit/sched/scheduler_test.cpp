@@ -27,6 +27,7 @@ fs::path temp_dir(const std::string& name) { return test_support::fresh_scratch_
 class FakeExecutor : public Executor {
  public:
   void start(const JobLaunch& job) override {
+    in_flight_before.push_back(queue_.size());
     started.push_back(job);
     queue_.push_back(job);
     max_in_flight = std::max(max_in_flight, queue_.size());
@@ -74,6 +75,7 @@ class FakeExecutor : public Executor {
   std::string external_id(long long) const override { return ""; }
 
   std::vector<JobLaunch> started;
+  std::vector<std::size_t> in_flight_before;  // jobs in flight when each was started
   std::size_t max_in_flight = 0;
 
  private:
@@ -217,6 +219,52 @@ TEST(Scheduler, AStopRequestReleasesJobsInFlight) {
   r.step();
   EXPECT_EQ(r.as_int(0), 4);
   EXPECT_EQ(r.as_int(1), 4);
+}
+
+// A study's cores rule (study/job_cores.h) through the loop: each job's
+// --threads is its cores, capped by the pool's; a 2-core job on a 2-core
+// pool runs alone, the 1-core jobs run two at a time.
+TEST(Scheduler, CoresRuleGivesThreadsAndPacksThePool) {
+  const auto dir = temp_dir("cores");
+  Store store(dir / "db.sqlite");
+  Study s;
+  s.name = "cores";
+  s.definition = {{"name", "cores"}, {"cores", "cells"}};
+  ExpandedStudy ex;
+  for (std::size_t i = 0; i < 2; ++i) {
+    ex.series.push_back(SeriesKey{i == 0 ? "A" : "B", "superbee", 6, "bvk", "diffusion"});
+    for (int g = 0; g < 4; ++g) {
+      StudyJob j;
+      j.series = i;
+      j.grid = static_cast<std::size_t>(g);
+      j.delta_star = 1.0 + 0.5 * g;
+      j.cells = {g + 1, g + 1, g + 1};  // 1, 8, 27, 64 cells: 1 core, then the pool's 2
+      j.doc = {{"mode", "ok"}, {"h", j.delta_star}};
+      j.hash = std::string(i == 0 ? "a" : "b") + std::to_string(g);
+      ex.jobs.push_back(j);
+    }
+  }
+  const auto sub = store.submit(s, ex);
+  FakeExecutor fake;
+  SchedulerOptions o = options_for(dir, sub.study_id);
+  o.workers = 2;
+  o.threads_per_job = 1;
+  o.cores = 2;
+  const auto sum = run_scheduler(store, fake, o);
+  EXPECT_EQ(sum.converged, 8);
+  ASSERT_EQ(fake.started.size(), 8u);
+  int one_core_beside_another = 0;
+  for (std::size_t k = 0; k < fake.started.size(); ++k) {
+    const JobLaunch& l = fake.started[k];
+    const int expected = l.cells[0] == 1 ? 1 : 2;
+    EXPECT_EQ(l.threads, expected) << l.cells[0];
+    EXPECT_EQ(l.cores, expected);
+    if (expected == 2) {
+      EXPECT_EQ(fake.in_flight_before[k], 0u) << "a 2-core job started beside another";
+    }
+    if (expected == 1 && fake.in_flight_before[k] == 1) ++one_core_beside_another;
+  }
+  EXPECT_EQ(one_core_beside_another, 1);  // the two 1-core jobs ran together
 }
 
 TEST(Outcome, ExitCodesMapToTheFailureClasses) {

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Removing a study (gridfree delete) and replacing a changed one (run
-// --replace): shared jobs stay, orphans go with their results and events, finished
-// identical jobs are reused; the nominal Δ* and the per-series view v_series.
+// --replace): delete removes the study's jobs no other study uses with their
+// results and events; a replace keeps the jobs no study needs any more
+// (reused when asked for again) until gc removes them (store/unneeded_jobs.h);
+// the nominal Δ* and the per-series view v_series.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "core/input_error.h"
 #include "store/store.h"
+#include "store/unneeded_jobs.h"
 #include "scratch_dir.h"
 #include "store_queries.h"
 
@@ -100,14 +103,74 @@ TEST(StoreDelete, ChangedDefinitionNeedsReplaceAndReusesFinishedJobs) {
   EXPECT_TRUE(r.created);
   EXPECT_EQ(r.jobs_reused, 1u);  // j1, done, is not run again
   EXPECT_EQ(r.jobs_new, 1u);     // j3
-  ASSERT_EQ(r.jobs_removed.size(), 1u);
-  EXPECT_EQ(r.jobs_removed.front(), "j2");
+  ASSERT_EQ(r.jobs_unneeded.size(), 1u);  // j2: kept, with its result
+  EXPECT_EQ(r.jobs_unneeded.front(), "j2");
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM studies WHERE name = 'a'"), 1);
   EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE status = 'queued'"), 1);
-  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM results"), 1);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM results"), 2);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE job_hash = 'j2' AND status = 'done'"), 1);
 
   // The same definition again is a resume, replace or not.
   EXPECT_FALSE(store.submit(changed, exc, true).replaced);
+}
+
+// A change and its revert: the first definition's finished jobs were kept,
+// so the revert reuses them all and queues nothing; the changed
+// definition's queued job, needed by no study now, is cancelled (kept), and
+// queued again when a study asks for it.
+TEST(StoreDelete, ARevertedChangeReusesTheKeptJobs) {
+  Store store(test_support::fresh_db_path("store_delete_test", "revert"));
+  auto [a, exa] = tagged_study("a", {"j1", "j2"});
+  finish_all(store, store.submit(a, exa).study_id);
+  auto [changed, exc] = tagged_study("a", {"j1", "j3"});
+  store.submit(changed, exc, true);
+  const auto back = store.submit(a, exa, true);
+  EXPECT_EQ(back.jobs_reused, 2u);
+  EXPECT_EQ(back.jobs_new, 0u);
+  EXPECT_EQ(back.jobs_unneeded, std::vector<std::string>{"j3"});
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE status = 'queued'"), 0);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE job_hash = 'j3' AND status = 'cancelled'"), 1);
+  EXPECT_FALSE(store.claim_next(back.study_id, "me")) << "nothing to run again";
+  const auto again = store.submit(changed, exc, true);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE job_hash = 'j3' AND status = 'queued'"), 1);
+  EXPECT_EQ(again.jobs_unneeded, std::vector<std::string>{"j2"});
+}
+
+// gc: lists exactly the jobs no study links; removing them takes their
+// results and events and leaves every linked job, shared or not. delete
+// removes the deleted study's own jobs only, not those another study left.
+TEST(StoreDelete, GcRemovesExactlyTheUnneededJobs) {
+  Store store(test_support::fresh_db_path("store_delete_test", "gc"));
+  auto [a, exa] = tagged_study("a", {"shared", "a1", "a2"});
+  auto [b, exb] = tagged_study("b", {"shared", "b1"});
+  finish_all(store, store.submit(a, exa).study_id);
+  finish_all(store, store.submit(b, exb).study_id);
+  auto [a2, exa2] = tagged_study("a", {"shared", "a3"});
+  store.submit(a2, exa2, true);  // a1, a2 unneeded
+  std::vector<std::string> listed;
+  for (const auto& j : unneeded_jobs(store.db())) listed.push_back(j.hash);
+  EXPECT_EQ(listed, (std::vector<std::string>{"a1", "a2"}));
+  EXPECT_EQ(unneeded_jobs(store.db()).front().status, "done");
+
+  // delete b: its own b1 goes, a's unneeded a1 and a2 stay for gc.
+  const auto removed = store.delete_study("b");
+  ASSERT_TRUE(removed);
+  EXPECT_EQ(*removed, std::vector<std::string>{"b1"});
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE job_hash IN ('a1', 'a2')"), 2);
+
+  const auto gone = remove_unneeded_jobs(store);
+  ASSERT_EQ(gone.size(), 2u);
+  EXPECT_EQ(gone[0].hash, "a1");
+  EXPECT_EQ(gone[1].hash, "a2");
+  EXPECT_TRUE(unneeded_jobs(store.db()).empty());
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs"), 2);  // shared, a3
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM jobs WHERE job_hash IN ('shared', 'a3')"), 2);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM results"), 1);  // shared's; a3 is queued
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM events WHERE job_id IS NOT NULL AND job_id NOT IN (SELECT id FROM jobs)"), 0);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM events WHERE kind = 'gc'"), 1);
+  EXPECT_EQ(scalar(store, "SELECT COUNT(*) FROM pragma_foreign_key_check"), 0);
+  EXPECT_FALSE(job_hash_stored(store.db(), "a1"));
+  EXPECT_TRUE(job_hash_stored(store.db(), "a3"));
 }
 
 TEST(StoreDelete, NominalDeltaStarAndTheSeriesView) {

@@ -199,5 +199,62 @@ TEST(ExternalStudy, ProblemsNameTheirPathAndReason) {
   }
 }
 
+// The cores rule (study/job_cores.h) in an external study: not part of any
+// job's identity; @@cores@@ defined in every rendered file; a variable may
+// not be named cores; the rule needs the case's cells.
+TEST(ExternalStudy, CoresRuleKeepsHashesAndDefinesTheCoresPlaceholder) {
+  const auto dir = poly_study_dir("cores");
+  const auto hashes = [&](const json& doc) {
+    std::vector<std::string> out;
+    for (const auto& j : expand(parse_study_document(doc, dir)).jobs) out.push_back(j.hash);
+    return out;
+  };
+  const auto base = hashes(poly_study());
+  json with = poly_study();
+  with["cores"] = "max(1, cells / 50)";
+  EXPECT_EQ(hashes(with), base);
+  // The template may use @@cores@@ (an undefined placeholder is refused).
+  write_file(dir / "poly/input.txt", "N @@N@@\nh @@h_cell@@\nranks @@cores@@\n");
+  EXPECT_NO_THROW(parse_study_document(with, dir));
+  write_file(dir / "poly/input.txt", "N @@N@@\nh @@h_cell@@\nranks @@ranks@@\n");
+  const auto undefined = problems_of(with, dir);
+  ASSERT_FALSE(undefined.empty());
+  EXPECT_NE(undefined[0].reason.find("@@ranks@@"), std::string::npos) << InputError(undefined).what();
+}
+
+TEST(ExternalStudy, CoresRuleRefusals) {
+  struct Row {
+    const char* name;
+    void (*edit)(json&);
+    std::string where, reason_part;
+  };
+  const std::string at = "/cases/poly/external";
+  const std::vector<Row> table = {
+      {"derived variable named cores", [](json& d) { d["cases"]["poly"]["external"]["variables"]["cores"] = "N"; },
+       at + "/variables/cores", "'cores' is the job's number of cores"},
+      {"grid variable named cores", [](json& d) { d["grids"]["variables"]["cores"] = {1, 2, 3, 4}; },
+       "/grids/variables/cores", "'cores' is the job's number of cores"},
+      {"reads a grid variable", [](json& d) { d["cores"] = "N / 2"; }, "/cores", "reads 'N'"},
+      {"no cells", [](json& d) {
+         d["cores"] = "cells / 10";
+         d["cases"]["poly"]["external"].erase("cells");
+       }, "/cores", "does not say how many cells"},
+      {"infinite on a grid", [](json& d) { d["cores"] = "1 / (cells - 36)"; },  // N = 6: 36 cells
+       "/cores", "is inf at 36 cells (case 'poly', grid 1)"},
+  };
+  for (const auto& r : table) {
+    SCOPED_TRACE(r.name);
+    const auto dir = poly_study_dir("cores_refusal");
+    json doc = poly_study();
+    r.edit(doc);
+    const auto problems = problems_of(doc, dir);
+    ASSERT_FALSE(problems.empty());
+    bool found = false;
+    for (const auto& p : problems)
+      if (p.where == r.where && p.reason.find(r.reason_part) != std::string::npos) found = true;
+    EXPECT_TRUE(found) << InputError(problems).what();
+  }
+}
+
 }  // namespace
 }  // namespace gridfree

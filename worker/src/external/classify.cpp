@@ -58,11 +58,13 @@ ExternalClassification classify_external(const ExternalSightings& s) {
     return classified("failed", "failed", with_stderr("command not found (exit code 127)", s.stderr_tail));
   if (s.exit && s.exit->code == 126)
     return classified("failed", "failed", with_stderr("command not executable (exit code 126)", s.stderr_tail));
-  // 2. A declared failure pattern.
+  // 2. A declared failure pattern (with stderr's tail unless the line is stderr's).
   if (s.failure)
     return classified("failed", "failed",
-                      "failure pattern \"" + s.failure->pattern + "\" at line " + std::to_string(s.failure->line) +
-                          " of " + s.failure->file + ": " + s.failure->text);
+                      with_stderr("failure pattern \"" + s.failure->pattern + "\" at line " +
+                                      std::to_string(s.failure->line) + " of " + s.failure->file + ": " +
+                                      s.failure->text,
+                                  s.failure->file == "stderr.log" ? std::string() : s.stderr_tail));
   // 3. Any other unsuccessful end.
   if (s.exit && s.exit->signal)
     return classified("failed", "failed",

@@ -4,7 +4,7 @@
 // observations, classify_external decides. Rules, first match wins:
 //   0 no record of the command's end (collect after a kill) failed
 //   1 command not found (exit 127) / not executable (126)   failed
-//   2 a failure pattern in stdout, stderr or a collected log failed
+//   2 a failure pattern in stdout, stderr or a log file   failed
 //   3 any other non-zero exit, or death by a signal         failed
 //   4 the driver's own gridfree_result.json says so         its status
 //   5 a quantity (or the residual) missing or not a number  failed
@@ -57,7 +57,7 @@ struct DriverVerdict {
 
 struct ExternalSightings {
   std::optional<ExternalExit> exit;  // empty: not recorded (the run did not finish)
-  std::string stderr_tail;           // the last non-empty line of stderr, for context
+  std::string stderr_tail;           // the last non-empty lines of stderr (" | "), for context
   std::optional<FailureSighting> failure;
   std::optional<DriverVerdict> driver;
   std::vector<QuantitySighting> quantities;

@@ -46,16 +46,46 @@ std::string case_relative(const fs::path& case_dir, const fs::path& file) {
   return file.lexically_relative(case_dir).generic_string();
 }
 
-std::string last_nonempty_line(const std::string& text) {
+// The last `lines` non-empty lines of a text, joined by " | ", at most
+// kStderrTailChars characters (the end kept): the tail of a command's stderr.
+constexpr std::size_t kStderrTailChars = 400;
+std::string last_nonempty_lines(const std::string& text, int lines) {
+  std::vector<std::string> found;
   std::size_t end = text.size();
-  while (end > 0) {
+  while (end > 0 && static_cast<int>(found.size()) < lines) {
     while (end > 0 && (text[end - 1] == '\n' || text[end - 1] == '\r' || text[end - 1] == ' ')) --end;
     if (end == 0) break;
     const std::size_t start = text.rfind('\n', end - 1);
     const std::size_t from = start == std::string::npos ? 0 : start + 1;
-    return text.substr(from, std::min<std::size_t>(end - from, 200));
+    std::string line = text.substr(from, end - from);
+    const std::size_t first = line.find_first_not_of(" \t");
+    found.push_back(first == std::string::npos ? line : line.substr(first));
+    end = from;
   }
-  return "";
+  std::string out;
+  for (auto it = found.rbegin(); it != found.rend(); ++it) out += (out.empty() ? "" : " | ") + *it;
+  if (out.size() > kStderrTailChars) out = "…" + out.substr(out.size() - kStderrTailChars);
+  return out;
+}
+
+// Files of case/ (top level) that look like logs: log.* (OpenFOAM's
+// log.blockMesh, log.icoFoam) or *.log, oldest first (the order the
+// programs of a command wrote them; ties by name).
+std::vector<fs::path> case_log_files(const fs::path& case_dir) {
+  std::vector<std::pair<fs::file_time_type, fs::path>> found;
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(case_dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    std::error_code type_ec;
+    if (!it->is_regular_file(type_ec)) continue;
+    const std::string name = it->path().filename().string();
+    const bool log_like = name.rfind("log.", 0) == 0 ||
+                          (name.size() > 4 && name.compare(name.size() - 4, 4, ".log") == 0);
+    if (log_like) found.emplace_back(it->last_write_time(type_ec), it->path());
+  }
+  std::sort(found.begin(), found.end());
+  std::vector<fs::path> out;
+  for (auto& [t, p] : found) out.push_back(p);
+  return out;
 }
 
 QuantitySighting sight_quantity(const QuantitySpec& q, const fs::path& case_dir) {
@@ -103,22 +133,30 @@ std::optional<DriverVerdict> sight_own_result(const fs::path& case_dir, std::vec
   return verdict;
 }
 
+// The failure patterns are searched in stdout, stderr, the files named in
+// collect.logs, the logs of the quantities and the residual, then every
+// other log file of case/ (case_log_files); the first matching line of the
+// first file with one is reported.
 std::optional<FailureSighting> sight_failure(const ExternalJob& job, const fs::path& case_dir) {
   if (job.collect.failure_patterns.empty()) return std::nullopt;
   std::vector<std::regex> patterns;
   for (const auto& p : job.collect.failure_patterns) patterns.emplace_back(p, std::regex::ECMAScript);
   std::vector<std::string> logs = {"stdout", "stderr"};
+  logs.insert(logs.end(), job.collect.logs.begin(), job.collect.logs.end());
   for (const auto& q : job.collect.quantities)
     if (!q.log.empty()) logs.push_back(q.log);
   if (job.collect.residual) logs.push_back(job.collect.residual->log);
+  std::vector<fs::path> files;
+  for (const auto& log : logs)
+    if (const auto file = driver_log_file(case_dir, log)) files.push_back(*file);
+  for (const auto& file : case_log_files(case_dir)) files.push_back(file);
   std::set<fs::path> seen;
-  for (const auto& log : logs) {
-    const auto file = driver_log_file(case_dir, log);
-    if (!file || !seen.insert(*file).second) continue;
-    const auto text = driver_read_text(*file);
+  for (const auto& file : files) {
+    if (!seen.insert(file).second) continue;
+    const auto text = driver_read_text(file);
     if (!text) continue;
     if (const auto hit = find_pattern(*text, patterns, job.collect.failure_patterns))
-      return FailureSighting{hit->pattern, case_relative(case_dir, *file), hit->line, hit->text};
+      return FailureSighting{hit->pattern, case_relative(case_dir, file), hit->line, hit->text};
   }
   return std::nullopt;
 }
@@ -170,7 +208,7 @@ void copy_template(const fs::path& from, const fs::path& to) {
 ExternalSightings gather_sightings(const ExternalJob& job, const fs::path& case_dir, const std::optional<ExternalExit>& exit) {
   ExternalSightings s;
   s.exit = exit;
-  if (const auto err = driver_read_text(case_dir / kCaseStderr)) s.stderr_tail = last_nonempty_line(*err);
+  if (const auto err = driver_read_text(case_dir / kCaseStderr)) s.stderr_tail = last_nonempty_lines(*err, 3);
   s.failure = sight_failure(job, case_dir);
   std::vector<QuantitySighting> own;
   s.driver = sight_own_result(case_dir, own);
@@ -199,8 +237,11 @@ ExternalSightings gather_sightings(const ExternalJob& job, const fs::path& case_
   return s;
 }
 
-void prepare_external_case(const ExternalJob& job, const fs::path& run_dir) {
+void prepare_external_case(const ExternalJob& job, const fs::path& run_dir, int cores) {
   const fs::path case_dir = run_dir / kCaseFolder;
+  RenderVariables variables = job.variables;
+  const bool has_cores = std::any_of(variables.begin(), variables.end(), [](const auto& v) { return v.first == "cores"; });
+  if (!has_cores) variables.emplace_back("cores", cores);
   fs::remove_all(case_dir);
   copy_template(job.template_dir, case_dir);
   for (std::size_t i = 0; i < job.render.size(); ++i) {
@@ -209,10 +250,10 @@ void prepare_external_case(const ExternalJob& job, const fs::path& run_dir) {
     if (!text || fs::is_directory(job.template_dir / job.render[i]))
       throw InputError(where, job.render[i] + " is not a file in the template folder");
     try {
-      driver_write_text(case_dir / job.render[i], render_placeholders(*text, job.variables, job.render[i]));
+      driver_write_text(case_dir / job.render[i], render_placeholders(*text, variables, job.render[i]));
     } catch (const UndefinedPlaceholder& e) {
       std::string known;
-      for (const auto& [name, value] : job.variables) known += (known.empty() ? "" : ", ") + name;
+      for (const auto& [name, value] : variables) known += (known.empty() ? "" : ", ") + name;
       throw InputError(where, std::string(e.what()) + " (variables: " + (known.empty() ? "none" : known) + ")");
     }
   }
@@ -234,7 +275,7 @@ ExternalRunEnd run_external_job(const ExternalJob& job, const ExternalRunOptions
                                            job.template_sha256.substr(0, 12) + "); plan the study again");
     return end;
   }
-  prepare_external_case(job, options.run_dir);
+  prepare_external_case(job, options.run_dir, options.cores);
   const fs::path case_dir = options.run_dir / kCaseFolder;
   if (options.stop_requested && options.stop_requested()) {  // asked to stop while copying
     end.stopped = true;

@@ -32,6 +32,7 @@ struct ExternalRunOptions {
   std::function<bool()> stop_requested;    // polled while the command runs
   std::function<void(double elapsed_s)> on_tick;
   double stop_grace_s = 10;
+  int cores = 1;                           // @@cores@@ (--threads; docs/EXTERNAL.md "Cores")
 };
 
 struct ExternalRunEnd {
@@ -41,10 +42,11 @@ struct ExternalRunEnd {
 };
 
 // Copies the template to run_dir/case (an old case/ removed first) and
-// renders the `render` files. Throws InputError (the render entry's JSON
+// renders the `render` files; @@cores@@ is `cores` unless the job defines
+// a variable of that name (a job document written by hand). Throws InputError (the render entry's JSON
 // pointer; file, line and name of an undefined placeholder) and
 // std::runtime_error (the file system).
-void prepare_external_case(const ExternalJob& job, const std::filesystem::path& run_dir);
+void prepare_external_case(const ExternalJob& job, const std::filesystem::path& run_dir, int cores = 1);
 
 // The whole run. Template problems (changed since planning, unreadable)
 // and a command that cannot be run give a failed result, not an exception.

@@ -36,6 +36,10 @@ struct ResidualSpec {
 struct CollectSpec {
   std::vector<QuantitySpec> quantities;
   std::vector<std::string> failure_patterns;  // ECMAScript regexes, searched line by line
+  // Further files (paths or globs relative to case/) the failure patterns
+  // are searched in, besides stdout, stderr, the collected logs and every
+  // log.* / *.log file of case/ (docs/EXTERNAL.md "Collection").
+  std::vector<std::string> logs;
   std::optional<ResidualSpec> residual;
   std::optional<double> steady_tolerance;
 };

@@ -136,8 +136,10 @@ CollectSpec parse_collect(const json& ext, ProblemList& problems) {
   }
   for (const auto& [key, value] : col.items()) {
     (void)value;
-    if (key != "quantities" && key != "failure_patterns" && key != "residual" && key != "steady_tolerance")
-      problems.add(where + "/" + key, "unknown field (expected quantities, failure_patterns, residual, steady_tolerance)");
+    if (key != "quantities" && key != "failure_patterns" && key != "logs" && key != "residual" &&
+        key != "steady_tolerance")
+      problems.add(where + "/" + key,
+                   "unknown field (expected quantities, failure_patterns, logs, residual, steady_tolerance)");
   }
   if (col.contains("quantities")) {
     if (!col.at("quantities").is_object()) problems.add(where + "/quantities", "must be an object: name → how to read it");
@@ -150,6 +152,10 @@ CollectSpec parse_collect(const json& ext, ProblemList& problems) {
     if (c.failure_patterns[i].empty()) problems.add(where + "/failure_patterns/" + std::to_string(i), "is empty");
     else check_regex(c.failure_patterns[i], 0, where + "/failure_patterns/" + std::to_string(i), problems);
   }
+  c.logs = ext_string_list(col, "logs", where, problems);
+  for (std::size_t i = 0; i < c.logs.size(); ++i)
+    if (c.logs[i].empty() || !is_inside_relative(c.logs[i]))
+      problems.add(where + "/logs/" + std::to_string(i), "must be a path (or glob) relative to the case folder");
   if (col.contains("residual")) {
     const auto& r = col.at("residual");
     const std::string rw = where + "/residual";
