@@ -11,7 +11,7 @@
 //            [Xing & Stern, J. Fluids Eng. 132 (2010) 061403]
 //     every U_i ≥ FS |f0 − f_i| + σ_RE,  U₀ ≥ FS |f0 − f_1| + σ_RE
 //     consistent when |q − 1| ≤ order_tolerance; p not found is inconsistent
-//   leave-one-out (n ≥ 5): f0 of the series without its coarsest grid and
+//   leave-one-out (n ≥ 6): f0 of the series without its coarsest grid and
 //     without its finest, same method and settings;
 //     agree when both lie within U₀ of f0; every U_i and U₀ then grow to
 //     hold both: U_i ≥ 1.25 |f0_k − f_i| + σ_RE, U₀ ≥ U₀ + 1.25 |f0_k − f0|
@@ -35,7 +35,9 @@ namespace gridfree {
 
 struct BiasRules {
   double order_tolerance = 0.25;  // |p/P − 1| accepted as "the declared order"
-  std::size_t min_grids_loo = 5;  // each leave-one-out fit keeps ≥ 4 grids
+  // Each leave-one-out fit keeps ≥ 5 grids: a 4-grid fit has one degree of
+  // freedom and cannot be judged itself (Verdicts), so it cannot judge another.
+  std::size_t min_grids_loo = 6;
 };
 
 // Xing & Stern's factor of safety for q = p_observed / p_declared > 0.
