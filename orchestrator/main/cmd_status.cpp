@@ -8,6 +8,7 @@
 #include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "exec/executor.h"
+#include "report/extrapolator.h"
 #include "sched/series_finish.h"
 #include "sched/stability_status.h"
 #include "sched/stop_signal.h"
@@ -52,6 +53,15 @@ void mark_orphans(nlohmann::json& d, const RunningJobs& r) {
   }
 }
 
+// The study's extrapolation method, declared order and the method's measured
+// coverage (docs/EXTRAPOLATION.md "Coverage on other codes' series").
+nlohmann::json extrapolation_json(Store& store, long long study_id) {
+  const ExtrapolatorSettings e = study_extrapolation_settings(store, study_id);
+  return {{"method", e.method},
+          {"expected_order", e.expected_order ? nlohmann::json(*e.expected_order) : nlohmann::json(nullptr)},
+          {"measured_coverage", measured_coverage_line(e.method, e.expected_order.has_value())}};
+}
+
 }  // namespace
 
 void add_status_command(CLI::App& app, int& exit_code) {
@@ -90,6 +100,7 @@ void add_status_command(CLI::App& app, int& exit_code) {
       }
       if (detail) out[0]["detail"] = *detail;
       if (id && !out.empty()) out[0]["stability"] = stability_status(*store, *id);  // outcome per grid
+      if (id && !out.empty()) out[0]["extrapolation"] = extrapolation_json(*store, *id);
       std::cout << out.dump(2) << '\n';
     } else {
       std::printf("%-28s %-10s %6s %6s %7s %8s %6s %6s %9s %9s %8s\n", "study", "status", "jobs", "queued",
@@ -104,6 +115,10 @@ void add_status_command(CLI::App& app, int& exit_code) {
         std::cout << "orphaned: marked running by a run or daemon that is gone; the next run or daemon adopts "
                      "(Slurm) or requeues them\n";
       if (detail) std::cout << '\n' << study_detail_text(*detail);
+      if (id && !rows.empty()) {  // the method and what it was measured to cover
+        const ExtrapolatorSettings e = study_extrapolation_settings(*store, *id);
+        std::cout << "\nextrapolation: " << measured_coverage_line(e.method, e.expected_order.has_value()) << '\n';
+      }
       if (id && !rows.empty()) {  // the outcome of every grid, counted (the report's stability map)
         const auto counts = stability_status(*store, *id)["counts"];
         std::string line;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// gridfree-worker verify [--json] [--quick] [--scheme NAME]... [--threads N]
+// gridfree-worker verify [--json] [--quick] [--scheme NAME]... [--grids N...] [--threads N]
 // Code verification with manufactured solutions: observed vs expected order
 // of accuracy for every convection scheme and for the filter; the grids of
 // all studies are solved concurrently on the threads. Exit 0 only if
@@ -27,6 +27,7 @@ struct VerifyArgs {
   bool json = false;
   bool quick = false;
   std::vector<std::string> schemes;
+  std::vector<int> grids;  // empty: the default set
   int threads = 0;  // 0 = OMP_NUM_THREADS, else all cores
 };
 
@@ -44,6 +45,11 @@ int run(const VerifyArgs& args) {
   omp_set_max_active_levels(1);  // one problem per thread: the solvers' own loops stay serial
   VerifyOptions options;
   options.quick = args.quick;
+  for (std::size_t i = 0; i < args.grids.size(); ++i)
+    if (args.grids[i] < 4 || (i > 0 && args.grids[i] <= args.grids[i - 1]))
+      throw InputError("--grids", "cells per direction must be at least 4 and increasing, got " +
+                                      std::to_string(args.grids[i]) + " at position " + std::to_string(i + 1));
+  options.grids = args.grids;
   for (std::size_t i = 0; i < args.schemes.size(); ++i) {
     const auto limiter = limiter_from_name(args.schemes[i]);
     if (!limiter)
@@ -75,6 +81,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", args->json, "Print the results as JSON");
   sub->add_flag("--quick", args->quick, "Coarser, fewer grids (seconds instead of minutes)");
   sub->add_option("--scheme", args->schemes, "Only these convection schemes (repeatable)");
+  sub->add_option("--grids", args->grids,
+                  "cells per direction of every study's grids, coarse to fine (default 16 32 64 128; "
+                  "--quick 16 32 64)");
   sub->add_option("--threads", args->threads, "problems solved at once (default: OMP_NUM_THREADS, else all cores)");
   sub->callback([args, &exit_code] {
     spdlog::set_level(args->json ? spdlog::level::warn : spdlog::level::info);

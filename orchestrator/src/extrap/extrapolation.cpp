@@ -6,9 +6,12 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "extrap/bias_checks.h"
+#include "extrap/coverage_record.h"
 #include "extrap/eh14.h"
 #include "extrap/fm_uncertainty.h"
 #include "extrap/gci.h"
+#include "extrap/model_average.h"
 #include "extrap/verdict.h"
 
 namespace gridfree {
@@ -54,14 +57,18 @@ void validate_options(const ExtrapolationOptions& opts) {
       !std::isfinite(opts.search.p_max))
     problems.add("p search range", "needs 0 < p_min < p_max");
   if (opts.search.points_per_side < 3) problems.add("p search points", "needs at least 3 points");
+  if (opts.expected_order && !(std::isfinite(*opts.expected_order) && *opts.expected_order > 0))
+    problems.add("--order", "the declared order must be a finite number > 0, got " +
+                                std::to_string(*opts.expected_order));
   problems.throw_if_any();
 }
 
 ExtrapolationMethod parse_method(const std::string& name, const std::string& where) {
+  if (name == "averaged") return ExtrapolationMethod::kAveraged;
   if (name == "capped") return ExtrapolationMethod::kCapped;
   if (name == "fm") return ExtrapolationMethod::kFm;
   if (name == "eh14") return ExtrapolationMethod::kEh14;
-  throw InputError(where, "unknown extrapolation method \"" + name + "\"; valid: capped, fm, eh14");
+  throw InputError(where, "unknown extrapolation method \"" + name + "\"; valid: averaged, capped, fm, eh14");
 }
 
 ExtrapolationResult extrapolate(const std::vector<double>& h, const std::vector<double>& f,
@@ -91,9 +98,12 @@ void fit_series(const Series& s, const ExtrapolationOptions& opts, Extrapolation
   }
   if (opts.method == ExtrapolationMethod::kEh14)
     eh14_extrapolate(s, opts, out);
+  else if (opts.method == ExtrapolationMethod::kAveraged)
+    averaged_extrapolate(s, opts, out);
   else
     fm_extrapolate(s, opts, out);
   if (out.f0 && out.sigma_re) out.u0 = extrapolated_value_uncertainty(*out.f0, s.f.front(), *out.sigma_re);
+  if (out.u0 && out.model_spread) widen_u0_to_hold(out.model_spread->f0, out);
 }
 
 }  // namespace
@@ -101,7 +111,18 @@ void fit_series(const Series& s, const ExtrapolationOptions& opts, Extrapolation
 ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opts) {
   ExtrapolationResult out;
   fit_series(s, opts, out);
+  // The leave-one-out fits use the same method and settings, without checks of their own.
+  const SubSeriesF0 refit = [&opts](const Series& sub) {
+    ExtrapolationResult r;
+    fit_series(sub, opts, r);
+    return r.f0;
+  };
+  const std::vector<std::string> failed = apply_bias_checks(s, opts, refit, out);
   out.verdict = judge(out, opts);
+  demote_for_bias(failed, s.h, out.verdict);
+  const std::string record = measured_coverage_sentence(opts.method, opts.expected_order.has_value(),
+                                                        out.verdict.value);
+  if (!record.empty() && out.method && *out.method != "constant") out.notes.push_back(record);
   return out;
 }
 

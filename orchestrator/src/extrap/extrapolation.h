@@ -38,7 +38,7 @@ ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opt
 // range is not 0 < p_min < p_max.
 void validate_options(const ExtrapolationOptions& opts);
 
-// "capped" | "fm" | "eh14" -> method; anything else is an InputError at `where`.
+// "averaged" | "capped" | "fm" | "eh14" -> method; anything else is an InputError at `where`.
 ExtrapolationMethod parse_method(const std::string& name, const std::string& where);
 
 nlohmann::json to_json(const ExtrapolationResult& r);

@@ -7,6 +7,8 @@
 
 #include "extrap/extrapolation.h"
 
+#include "extrap/bias_checks.h"
+
 namespace gridfree {
 namespace {
 
@@ -119,6 +121,8 @@ nlohmann::ordered_json to_ordered_json(const ExtrapolationResult& r) {
                  {"scatter_branch", r.eh14->scatter},
                  {"error_estimate", r.eh14->error_estimate},
                  {"p_observed", num(r.eh14->p)}};
+  if (r.model_spread) j["model_average"] = {{"fits", r.model_spread->fits}, {"f0", r.model_spread->f0}};
+  j["bias_checks"] = to_ordered_json(r.bias);
   j["notes"] = r.notes;
   return j;
 }

@@ -15,20 +15,27 @@
 namespace gridfree {
 
 enum class ExtrapolationMethod {
-  kCapped,  // FM with observed orders above p_high capped at p_high (default,
-            // docs/EXTRAPOLATION.md "Default procedure")
+  kAveraged,  // capped, widened to the spread of f0 over the admissible fits
+              // (default, docs/EXTRAPOLATION.md "Default procedure", model_average.h)
+  kCapped,  // FM with observed orders above p_high capped at p_high
   kFm,      // Fullmer & Musser (2018), PHYSICS.md §8, as published
   kEh14,    // Eça & Hoekstra (2014), full procedure
 };
 
 struct ExtrapolationOptions {
-  ExtrapolationMethod method = ExtrapolationMethod::kCapped;
+  ExtrapolationMethod method = ExtrapolationMethod::kAveraged;
   // Accepted observed orders: FM uses the power law iff p_low ≤ p ≤ p_high
   // (capped: p > p_high → the fit f0 + c h^p_high);
   // EH14 uses Fs = 1.25 iff p_low ≤ p < p_high (and σ < Δφ).
   double p_low = 0.5, p_high = 2.1;
   Weighting weights = Weighting::kInverseH;  // FM fits (EH14 tries both)
   PowerSearch search;                        // p scan range and density
+  // Declared formal order of the discretization (`--order`, a study's
+  // extrapolation.expected_order); empty: none declared (bias_checks.h).
+  std::optional<double> expected_order;
+  // The leave-one-out test of bias_checks.h (default on; off reproduces the
+  // procedure before it, for comparison: `--no-leave-one-out`).
+  bool leave_one_out = true;
 };
 
 // One fit as reported under "fits". Unused members stay empty.
@@ -51,6 +58,20 @@ struct Eh14Branch {
   std::optional<double> p;     // observed order of the selected power-law fit
 };
 
+// The bias checks of bias_checks.h: declared order and leave-one-out fits.
+struct BiasCheck {
+  std::optional<double> expected_order, order_ratio, order_factor;  // P, p/P, Xing & Stern FS
+  std::optional<bool> order_consistent;                             // empty: no order declared
+  std::optional<double> f0_without_coarsest, f0_without_finest;
+  std::optional<bool> leave_one_out_agree;                          // empty: too few grids
+};
+
+// The fits whose f0 the `averaged` method's uncertainty holds (model_average.h).
+struct ModelSpreadSummary {
+  std::vector<std::string> fits;
+  std::vector<double> f0;
+};
+
 struct ExtrapolationResult {
   std::string status = "ok";           // ok | insufficient_grids
   std::optional<std::string> method;   // power | mixed | constant | eh14_<fit>_<weighting>
@@ -62,6 +83,8 @@ struct ExtrapolationResult {
   std::vector<GciTriplet> gci;         // consecutive triplets, finest first
   std::optional<Eh14Branch> eh14;
   std::vector<std::string> notes;      // plain-language remarks for reports
+  std::optional<ModelSpreadSummary> model_spread;  // averaged only
+  BiasCheck bias;                      // bias_checks.h (filled for every fitted series)
   Verdict verdict;                     // one word and its reasons (verdict.h)
 };
 

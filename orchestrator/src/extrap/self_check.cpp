@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "extrap/verdict.h"
+
 namespace gridfree {
 namespace {
 
@@ -46,6 +48,8 @@ CoverageCheck coverage_self_check(const std::vector<double>& h, const std::vecto
   }
   out.status = "checked";
   out.reference = whole.f0;
+  out.order_consistent = whole.order_consistent;
+  out.leave_one_out_agree = whole.leave_one_out_agree;
 
   // Windows among grids 1 … n−1 (the finest grid, index 0, is left out).
   for (std::size_t count = rules.min_window; count <= std::min(n - 1, rules.max_window); ++count) {
@@ -74,11 +78,30 @@ bool CoverageCheck::below_promise() const {
   return judged > 0 && static_cast<double>(covered) < promised * judged;
 }
 
+bool CoverageCheck::bias_failed() const {
+  return order_consistent == std::optional<bool>(false) || leave_one_out_agree == std::optional<bool>(false);
+}
+
+bool CoverageCheck::flagged() const { return below_promise() || bias_failed(); }
+
+void demote_if_flagged(const CoverageCheck& check, const std::vector<double>& h, Verdict& v) {
+  if (v.value != "converged" || !check.flagged()) return;
+  v.value = "pre-asymptotic";
+  const double r = mean_refinement_ratio(h);
+  v.next_h = h.front() / r;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "add the next finer grid Δ* = %.4g (the series' mean refinement ratio %.4g)",
+                *v.next_h, r);
+  v.reasons = {"the coverage self-check flags the series: " + check.summary(), buf};
+}
+
 WindowFit window_fit(const ExtrapolationResult& r) {
   WindowFit fit;
   fit.verdict = r.verdict.value;
   fit.f0 = r.f0;
   fit.u0 = r.u0;
+  fit.order_consistent = r.bias.order_consistent;
+  fit.leave_one_out_agree = r.bias.leave_one_out_agree;
   if (!r.grids.empty()) {
     fit.f1 = r.grids.front().f;
     fit.u1 = r.grids.front().u;
@@ -121,7 +144,11 @@ nlohmann::ordered_json to_ordered_json(const CoverageCheck& c) {
                {"f0_covered", c.f0_covered},
                {"promised", c.promised},
                {"below_promise", c.below_promise()},
+               {"order_consistent", flag_or_null(c.order_consistent)},
+               {"leave_one_out_agree", flag_or_null(c.leave_one_out_agree)},
+               {"flagged", c.flagged()},
                {"summary", c.summary()},
+               {"shows", kSelfCheckShows},
                {"windows", windows}};
 }
 
@@ -148,6 +175,8 @@ CoverageCheck coverage_from_json(const nlohmann::json& j) {
   c.covered = j.value("covered", 0);
   c.f0_covered = j.value("f0_covered", 0);
   c.promised = j.value("promised", 0.95);
+  c.order_consistent = flag_at(j, "order_consistent");
+  c.leave_one_out_agree = flag_at(j, "leave_one_out_agree");
   if (!j.contains("windows") || !j["windows"].is_array()) return c;
   for (const auto& w : j["windows"]) {
     CoverageWindow win;
@@ -155,7 +184,7 @@ CoverageCheck coverage_from_json(const nlohmann::json& j) {
     win.h_coarse = number_at(w, "h_coarse").value_or(0.0);
     win.count = w.value("n_grids", std::size_t{0});
     win.fit = {w.value("verdict", std::string()), number_at(w, "f0"), number_at(w, "u0"), number_at(w, "f1"),
-               number_at(w, "u1")};
+               number_at(w, "u1"), {}, {}};
     win.distance = number_at(w, "distance");
     win.covered = flag_at(w, "covered");
     win.f0_covered = flag_at(w, "f0_covered");
@@ -173,6 +202,10 @@ std::string CoverageCheck::summary() const {
                   std::to_string(f0_covered) + " of " + std::to_string(judged);
   if (below_promise()) s += ": below the " + percent_of(static_cast<int>(std::lround(promised * 100)), 100) +
                             " the method was measured to reach";
+  if (order_consistent == std::optional<bool>(false))
+    s += "; the observed order contradicts the declared one";
+  if (leave_one_out_agree == std::optional<bool>(false))
+    s += "; the fits without the coarsest and without the finest grid disagree beyond U₀";
   return s;
 }
 

@@ -17,6 +17,12 @@
 // measured to reach, docs/EXTRAPOLATION.md) it is a warning. The windows
 // share grids, so k/n is not a binomial rate: one pre-asymptotic stretch of
 // coarse grids can account for several misses.
+//
+// The reference is the same procedure on more grids, so a bias every window
+// shares is invisible to the window comparison. The check therefore also
+// carries the whole series' bias tests (bias_checks.h: observed against
+// declared order, leave-one-out agreement); a failed test flags the series
+// as a coverage below the promise does.
 #pragma once
 
 #include <cstddef>
@@ -31,10 +37,18 @@
 
 namespace gridfree {
 
+// What a passing check shows and what it does not (with every check's JSON).
+inline constexpr const char* kSelfCheckShows =
+    "A passing check shows that the uncertainty of the series' coarser windows covered what the same procedure "
+    "gives on all its grids, that the fits without its coarsest and without its finest grid agree, and (when "
+    "one is declared) that the observed order agrees with the formal order. It does not show that f0 is the "
+    "exact answer: an error every grid shares in the same proportion passes every one of these tests.";
+
 // What the check needs of one extrapolation.
 struct WindowFit {
   std::string verdict;                   // converged | pre-asymptotic | unreliable | insufficient_grids
   std::optional<double> f0, u0, f1, u1;  // u1: the finest grid's U; u0: f0's own uncertainty
+  std::optional<bool> order_consistent, leave_one_out_agree;  // bias tests (empty: not made)
 };
 
 using WindowExtrapolator = std::function<WindowFit(const std::vector<double>& h, const std::vector<double>& f)>;
@@ -61,11 +75,16 @@ struct CoverageCheck {
   std::vector<CoverageWindow> windows;
   int judged = 0, covered = 0, f0_covered = 0;
   double promised = 0.95;
+  std::optional<bool> order_consistent, leave_one_out_agree;  // the whole series' bias tests
 
   // The one-line summary: "U₁ covered the answer in k of n coarser windows …".
   std::string summary() const;
   // True when judged windows exist and covered/judged < promised.
   bool below_promise() const;
+  // True when a bias test of the whole series failed.
+  bool bias_failed() const;
+  // below_promise() or bias_failed(): the series is not `converged`.
+  bool flagged() const;
 };
 
 // h ascending (finest first), as make_series returns it. `extrapolate` is
@@ -73,12 +92,17 @@ struct CoverageCheck {
 CoverageCheck coverage_self_check(const std::vector<double>& h, const std::vector<double>& f,
                                   const WindowExtrapolator& extrapolate, const CoverageRules& rules = {});
 
+// A `converged` verdict whose series' check is flagged becomes
+// `pre-asymptotic` (the check's summary as its reason, the next finer grid
+// h_1/r named); h ascending. Other verdicts and passing checks are left.
+void demote_if_flagged(const CoverageCheck& check, const std::vector<double>& h, Verdict& v);
+
 // The numbers the check needs from a library extrapolation.
 WindowFit window_fit(const ExtrapolationResult& r);
 
 // JSON of docs/INTERFACE.md §4 "self_check": status, reference,
 // reference_verdict, judged, covered, f0_covered, promised, below_promise,
-// summary and windows[{h_fine, h_coarse, n_grids, verdict, f0, u0, f1, u1,
+// order_consistent, leave_one_out_agree, flagged, summary, shows and windows[{h_fine, h_coarse, n_grids, verdict, f0, u0, f1, u1,
 // distance, covered, f0_covered}] (null where not computed).
 nlohmann::ordered_json to_ordered_json(const CoverageCheck& check);
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,12 +18,17 @@ using Extrapolator =
     std::function<nlohmann::json(const std::vector<double>& h, const std::vector<double>& f)>;
 
 struct ExtrapolatorSettings {
-  std::string method = "capped";    // capped (default) | fm (PHYSICS.md §8) | eh14
+  std::string method = "averaged";  // averaged (default) | capped | fm (PHYSICS.md §8) | eh14
   double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
   std::string weights = "inverse_h"; // inverse_h | uniform (fm fits)
+  std::optional<double> expected_order;  // declared formal order (extrap/bias_checks.h)
 };
 
 // extrap/extrapolation.h's extrapolate(), returned as to_json(result).
 Extrapolator library_extrapolator(const ExtrapolatorSettings& settings);
+
+// One line naming the method, the corpus it was measured on and its measured
+// coverage per verdict class (extrap/coverage_record.h); "" for an unknown method.
+std::string measured_coverage_line(const std::string& method, bool order_declared);
 
 }  // namespace gridfree

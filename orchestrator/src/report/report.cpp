@@ -107,7 +107,9 @@ void write_series_pages(const ReportContent& content, const std::filesystem::pat
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,
                                const StopRequested& stop) {
   return write_study_report(data, out_dir,
-                            library_extrapolator({data.extrapolation_method, data.p_low, data.p_high}), stop);
+                            library_extrapolator({data.extrapolation_method, data.p_low, data.p_high, "inverse_h",
+                                                                  data.expected_order}),
+                            stop);
 }
 
 ReportFiles write_study_report(const StudyReportData& data, const std::filesystem::path& out_dir,

@@ -67,6 +67,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.data.extrapolation_method = data.extrapolation_method;
   c.data.p_low = data.p_low;
   c.data.p_high = data.p_high;
+  c.data.expected_order = data.expected_order;
   c.data.generator_kinds = data.generator_kinds;
   c.data.target_rde = data.target_rde;
   c.data.export_charts = data.export_charts;

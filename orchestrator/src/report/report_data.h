@@ -54,8 +54,9 @@ struct StudyReportData {
   std::string submitted_at, finished_at;
   std::string version;               // gridfree version that wrote the report
   std::string baseline_description;  // design (factorial / one_at_a_time baseline)
-  std::string extrapolation_method = "capped";  // capped | fm | eh14
+  std::string extrapolation_method = "averaged";  // averaged | capped | fm | eh14
   double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
+  std::optional<double> expected_order;  // the study's extrapolation.expected_order
   std::vector<std::string> generator_kinds;
   std::optional<double> target_rde;  // the study's grids.target_rde (adaptive grids), drawn on the RDE chart
   bool export_charts = true;         // PDF/PNG beside every SVG (report/chart_export.h)  // particle generators of the study's cases (report_about.h)

@@ -3,6 +3,7 @@
 #include "report/report_summary.h"
 
 #include "extrap/verdict.h"
+#include "report/extrapolator.h"
 #include "report/series_coverage.h"
 #include "report/text_format.h"
 
@@ -18,6 +19,7 @@ std::vector<std::pair<std::string, std::string>> summary_items(const ReportConte
       {"Design", d.baseline_description},
       {"Extrapolation", d.extrapolation_method + " (power law accepted for " + format_g(d.p_low, 4) +
                             " ≤ p ≤ " + format_g(d.p_high, 4) + ")"},
+      {"Measured coverage", measured_coverage_line(d.extrapolation_method, d.expected_order.has_value())},
       {"Series", std::to_string(c.series.size())},
       {"Coverage self-check", coverage_summary(c.series)},
       {"Grids", std::to_string(c.grids_total()) + " (" + std::to_string(c.grids_converged()) + " converged, " +
@@ -76,9 +78,11 @@ std::string reading_note(const std::string& section, bool external) {
   if (section == "series.csv") {
     return std::string("f0 is the extrapolated (grid-free) ") + (external ? "value of the series' quantity" : "DP*") +
            ". The power law f0 + c·h^p is used when its exponent is "
-           "found inside the accepted range; with the default method (capped) an exponent above the range is "
-           "capped at its upper end (f0 + c·h^p_high), otherwise the mixed-order fit f0 + c1·h + c2·h² is used. "
-           "U₀ = 1.25|f0 − f₁| + σ_RE is f0's own uncertainty (f₁ the finest grid's value). σ_RE is the "
+           "found inside the accepted range; with the methods averaged (the default) and capped an exponent above "
+           "the range is capped at its upper end (f0 + c·h^p_high), otherwise the mixed-order fit f0 + c1·h + c2·h² "
+           "is used. U₀ = 1.25|f0 − f₁| + σ_RE is f0's own uncertainty (f₁ the finest grid's value); averaged "
+           "widens U and U₀ to hold f0 of every error expansion that describes the data, and every method to "
+           "hold the fits without the coarsest and without the finest grid (docs/EXTRAPOLATION.md). σ_RE is the "
            "standard deviation of the weighted fit, R_f = (max f − min f)/(ng − 1) the data range; "
            "σ_RE/R_f < 1 is a good fit when at least 2 degrees of freedom (ng ≥ 5) are left; with fewer the fit "
            "cannot be judged. Fs = max(1.25, 3σ_RE/R_f) is the safety factor of U. "

@@ -45,8 +45,16 @@ std::optional<CoverageCheck> coverage_of(const std::vector<double>& h, const std
   std::sort(grids.begin(), grids.end());
   std::vector<double> hs, fs;
   for (const auto& [hi, fi] : grids) hs.push_back(hi), fs.push_back(fi);
-  const WindowFit fit = window_fit(from_json(whole));
+  WindowFit fit = window_fit(from_json(whole));
   if (!fit.f0) return std::nullopt;
+  // The whole series' bias tests (extrap/bias_checks.h) travel with its check.
+  if (whole.contains("bias_checks") && whole["bias_checks"].is_object()) {
+    const auto& b = whole["bias_checks"];
+    if (b.contains("order_consistent") && b["order_consistent"].is_boolean())
+      fit.order_consistent = b["order_consistent"].get<bool>();
+    if (b.contains("leave_one_out_agree") && b["leave_one_out_agree"].is_boolean())
+      fit.leave_one_out_agree = b["leave_one_out_agree"].get<bool>();
+  }
   return check_sorted(hs, fs, fit, extrapolate);
 }
 

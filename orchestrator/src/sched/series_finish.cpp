@@ -4,13 +4,16 @@
 
 #include "report/external_labels.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 #include <spdlog/spdlog.h>
 
 #include "core/version.h"
+#include "extrap/self_check.h"
 #include "extrap/verdict.h"
 #include "report/report.h"
 #include "report/series_coverage.h"
@@ -43,6 +46,20 @@ VerdictRow verdict_row(const nlohmann::json& ex, int n_converged) {
   }
   const Verdict v = verdict_without_fit(n_converged, "the extrapolation failed: " + ex.value("status", std::string("?")));
   return {v.value, nlohmann::json(v.reasons).dump()};
+}
+
+// demote_if_flagged on the verdict object of the extrapolation JSON (h in any order).
+void demote_flagged_json(const CoverageCheck& check, std::vector<double> h, nlohmann::json& ex) {
+  if (!check.flagged() || h.empty() || !ex.contains("verdict") || !ex["verdict"].is_object() ||
+      ex["verdict"].value("value", std::string()) != "converged")
+    return;
+  std::sort(h.begin(), h.end());
+  Verdict v;
+  v.value = "converged";
+  demote_if_flagged(check, h, v);
+  ex["verdict"]["value"] = v.value;
+  ex["verdict"]["reasons"] = v.reasons;
+  ex["verdict"]["next_h"] = v.next_h ? nlohmann::json(*v.next_h) : nlohmann::json(nullptr);
 }
 
 std::string fixed(double v, int digits) {
@@ -106,6 +123,8 @@ ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_
     s.p_low = e["p_range"][0].get<double>();
     s.p_high = e["p_range"][1].get<double>();
   }
+  if (e.contains("expected_order") && e["expected_order"].is_number())
+    s.expected_order = e["expected_order"].get<double>();
   return s;
 }
 
@@ -182,18 +201,21 @@ nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extra
       ex = {{"status", std::string("error: ") + e.what()}};
     }
   }
+  // The coverage self-check, once per finished series: reports read it. A
+  // flagged check keeps the series from `converged`.
+  std::optional<CoverageCheck> check;
+  try {
+    check = coverage_of(h, f, ex, extrapolate);
+  } catch (const std::exception& e) {
+    spdlog::warn("series {}: coverage self-check failed: {}", series.key.label(), e.what());
+  }
+  if (check) demote_flagged_json(*check, h, ex);
   std::vector<ExtrapolationRow> fits;
   std::vector<UncertaintyRow> unc;
   extrapolation_rows(ex, points, fits, unc);
   const VerdictRow verdict = verdict_row(ex, static_cast<int>(h.size()));
   store.store_extrapolation(series.id, fits, unc, verdict);
-  // The coverage self-check, once per finished series: reports read it.
-  try {
-    if (const auto check = coverage_of(h, f, ex, extrapolate))
-      store.store_coverage(series.id, to_ordered_json(*check).dump());
-  } catch (const std::exception& e) {
-    spdlog::warn("series {}: coverage self-check failed: {}", series.key.label(), e.what());
-  }
+  if (check) store.store_coverage(series.id, to_ordered_json(*check).dump());
   spdlog::info("series {} complete: {} converged of {}; {}", series.key.label(), h.size(), points.size(),
                verdict_log_text(ex, verdict));
   return ex;
@@ -247,6 +269,7 @@ StudyReportData build_report_data(Store& store, long long study_id) {
   d.extrapolation_method = settings.method;
   d.p_low = settings.p_low;
   d.p_high = settings.p_high;
+  d.expected_order = settings.expected_order;
   const nlohmann::json definition = store.study_definition(study_id);
   d.generator_kinds = generator_kinds(definition);
   const nlohmann::json target = definition.value("/grids/target_rde"_json_pointer, nlohmann::json());
@@ -296,7 +319,8 @@ StudyReportData build_report_data(Store& store, long long study_id) {
 std::filesystem::path write_report(Store& store, long long study_id, const std::filesystem::path& out_dir,
                                    const StopRequested& stop, ExtrapolationMemo* memo) {
   const StudyReportData data = build_report_data(store, study_id);
-  Extrapolator extrapolate = library_extrapolator({data.extrapolation_method, data.p_low, data.p_high});
+  Extrapolator extrapolate =
+      library_extrapolator({data.extrapolation_method, data.p_low, data.p_high, "inverse_h", data.expected_order});
   // Adaptive series: the report fits what the decisions and the store used,
   // the window of the finest grids (sched/adaptive_window.h).
   if (adaptive_grids_of(store.study_definition(study_id))) extrapolate = windowed_extrapolator(std::move(extrapolate));

@@ -61,7 +61,8 @@ struct StudyCase {
 struct ExtrapolationSettings {
   std::string weights = "inverse_h";
   double p_low = 0.5, p_high = 2.1;
-  std::string method = "capped";  // capped | fm | eh14
+  std::string method = "averaged";  // averaged | capped | fm | eh14
+  std::optional<double> expected_order;  // formal order of the discretization (extrap/bias_checks.h)
 };
 
 // The alignment check of a study (study_alignment.h): which grids are

@@ -336,8 +336,8 @@ void parse_extrapolation(const json& doc, Study& s, ProblemList& problems) {
       s.extrapolation.weights = w->get<std::string>();
   }
   if (auto m = e->find("method"); m != e->end()) {
-    if (!m->is_string() || (*m != "capped" && *m != "fm" && *m != "eh14"))
-      problems.add_once("/extrapolation/method", "must be \"capped\", \"fm\" or \"eh14\"");
+    if (!m->is_string() || (*m != "averaged" && *m != "capped" && *m != "fm" && *m != "eh14"))
+      problems.add_once("/extrapolation/method", "must be \"averaged\", \"capped\", \"fm\" or \"eh14\"");
     else
       s.extrapolation.method = m->get<std::string>();
   }
@@ -349,6 +349,12 @@ void parse_extrapolation(const json& doc, Study& s, ProblemList& problems) {
       s.extrapolation.p_low = (*p)[0].get<double>();
       s.extrapolation.p_high = (*p)[1].get<double>();
     }
+  }
+  if (auto o = e->find("expected_order"); o != e->end()) {
+    if (!is_number(*o) || !(o->get<double>() > 0))
+      problems.add_once("/extrapolation/expected_order", "must be a number > 0 (the formal order of the scheme)");
+    else
+      s.extrapolation.expected_order = o->get<double>();
   }
 }
 

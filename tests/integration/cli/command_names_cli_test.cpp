@@ -54,6 +54,15 @@ TEST(CommandNamesCli, WorkerVersionNamesTheWorker) {
   }
 }
 
+TEST(CommandNamesCli, WorkerVerifyRefusesGridsThatDoNotIncrease) {
+  const fs::path dir = names_dir("verify_grids");
+  for (const char* args : {"verify --grids 16 8", "verify --grids 2 8"}) {
+    const CommandRun r = run_executable("gridfree-worker", args, dir);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_NE(r.err.find("--grids"), std::string::npos) << args << ": " << r.err;
+  }
+}
+
 TEST(CommandNamesCli, ExecutorHelpListsItsChoices) {
   const fs::path dir = names_dir("executor_help");
   const CommandRun r = run_executable("gridfree", "run --help", dir);

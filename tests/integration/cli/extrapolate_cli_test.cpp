@@ -97,6 +97,33 @@ TEST_F(ExtrapolateCli, InvalidInputExitsTwo) {
   const auto file = write("s.json", kJsonSeries).string();
   EXPECT_EQ(run_gridfree("extrapolate " + file + " --method gci", dir_).exit_code, 2);
   EXPECT_EQ(run_gridfree("extrapolate " + file + " --p-range 2 1", dir_).exit_code, 2);
+  EXPECT_EQ(run_gridfree("extrapolate " + file + " --order 0", dir_).exit_code, 2);
+  EXPECT_EQ(run_gridfree("extrapolate " + file + " --order -1", dir_).exit_code, 2);
+}
+
+// f = 2 + 0.5 h on 7 grids h = 0.25 … 16: exact first order. Declared second
+// order, the data contradict it: not converged, and the output says which
+// method, order and measured coverage it reports.
+TEST_F(ExtrapolateCli, ADeclaredOrderTheDataContradictIsNotConverged) {
+  const auto file =
+      write("s.json", R"({"h": [0.25, 0.5, 1, 2, 4, 8, 16], "f": [2.125, 2.25, 2.5, 3, 4, 6, 10]})").string();
+  const auto plain = nlohmann::json::parse(run_gridfree("extrapolate " + file, dir_).out);
+  EXPECT_EQ(plain["coverage"]["method"], "averaged");  // the default
+  EXPECT_EQ(plain["coverage"]["order_declared"], false);
+  EXPECT_TRUE(plain["bias_checks"]["order_consistent"].is_null());
+  EXPECT_EQ(plain["bias_checks"]["leave_one_out_agree"], true);
+  const CommandRun r = run_gridfree("extrapolate " + file + " --order 2", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["verdict"]["value"], "converged");
+  EXPECT_EQ(j["bias_checks"]["order_consistent"], false);
+  EXPECT_NEAR(j["bias_checks"]["order_ratio"].get<double>(), 0.5, 1e-8);
+  EXPECT_EQ(j["coverage"]["order_declared"], true);
+  EXPECT_TRUE(j["coverage"]["classes"].contains("converged"));
+  const CommandRun same = run_gridfree("extrapolate " + file + " --order 1", dir_);
+  EXPECT_EQ(nlohmann::json::parse(same.out)["bias_checks"]["order_consistent"], true);
+  const CommandRun before = run_gridfree("extrapolate " + file + " --method capped --no-leave-one-out", dir_);
+  EXPECT_TRUE(nlohmann::json::parse(before.out)["bias_checks"]["leave_one_out_agree"].is_null());
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The default procedure, capped (docs/EXTRAPOLATION.md "Default procedure"):
-// the paper's procedure except that an observed order above p_high is
+// The procedure capped (docs/EXTRAPOLATION.md "Method capped"), before the
+// bias checks widen U (formula_of): the paper's procedure except that an observed order above p_high is
 // capped at p_high (the fit f0 + c h^p_high), and U₀ = 1.25 |f0 − f₁| + σ_RE
 // for every method. Checked against independent computations: a closed-form
 // weighted linear regression on h^p_high, and the FM procedure itself where
@@ -47,7 +47,7 @@ LineFit fit_line_in_h_to_the_p(const std::vector<double>& h, const std::vector<d
 TEST(ExtrapCapped, AnOrderAboveTheRangeIsCappedAtPHigh) {
   const auto h = test::default_h();
   const auto f = test::power_law(h, 10.0, 1.0, 3.0);  // observed order 3 > 2.1
-  const ExtrapolationResult r = extrapolate(h, f);
+  const ExtrapolationResult r = extrapolate(h, f, test::formula_of(ExtrapolationMethod::kCapped));
   ASSERT_TRUE(r.method && r.capped && r.f0 && r.sigma_re && r.fs);
   EXPECT_EQ(*r.method, "capped_power");
   EXPECT_NEAR(*r.p, 3.0, 1e-9);       // the observed order is still reported
@@ -68,7 +68,8 @@ TEST(ExtrapCapped, OrdersInsideOrBelowTheRangeAreThePapersProcedure) {
   const auto h = test::default_h();
   for (double p : {1.5, 2.0, 0.3, -0.5}) {
     const auto f = test::power_law(h, 1158.8, 0.2, p);
-    const ExtrapolationResult capped = extrapolate(h, f), fm = test::extrapolate_fm(h, f);
+    const ExtrapolationResult capped = extrapolate(h, f, test::formula_of(ExtrapolationMethod::kCapped)),
+                              fm = test::extrapolate_fm(h, f);
     EXPECT_EQ(*capped.method, *fm.method) << "p = " << p;
     EXPECT_EQ(*capped.f0, *fm.f0) << "p = " << p;
     for (std::size_t i = 0; i < h.size(); ++i) EXPECT_EQ(*capped.grids[i].u, *fm.grids[i].u);
@@ -84,7 +85,8 @@ TEST(ExtrapCapped, CoversTheAnswerWhereTheMixedFitUnderExtrapolates) {
   const auto h = test::geometric_h(6, 0.9, 3.3);
   std::vector<double> f;
   for (double x : h) f.push_back(100 - x * x - 0.1 * x * x * x);
-  const ExtrapolationResult fm = test::extrapolate_fm(h, f), capped = extrapolate(h, f);
+  const ExtrapolationResult fm = test::extrapolate_fm(h, f),
+                            capped = extrapolate(h, f, test::formula_of(ExtrapolationMethod::kCapped));
   ASSERT_EQ(*fm.method, "mixed");
   EXPECT_GT(std::fabs(100 - fm.grids.front().f), *fm.grids.front().u);  // the paper's U₁ misses
   EXPECT_LE(std::fabs(100 - capped.grids.front().f), *capped.grids.front().u);
@@ -95,9 +97,7 @@ TEST(ExtrapCapped, U0IsTheSafetyFactorTimesTheCorrectionPlusTheScatter) {
   const auto h = test::oscillatory_h();
   const auto f = test::oscillatory_f(h);
   for (auto method : {ExtrapolationMethod::kCapped, ExtrapolationMethod::kFm, ExtrapolationMethod::kEh14}) {
-    ExtrapolationOptions opts;
-    opts.method = method;
-    const ExtrapolationResult r = extrapolate(h, f, opts);
+    const ExtrapolationResult r = extrapolate(h, f, test::formula_of(method));
     ASSERT_TRUE(r.u0 && r.f0 && r.sigma_re);
     EXPECT_DOUBLE_EQ(*r.u0, 1.25 * std::fabs(*r.f0 - f.front()) + *r.sigma_re);
     EXPECT_LE(std::fabs(1158.8 - *r.f0), *r.u0);  // and it covers the exact answer here
@@ -108,9 +108,10 @@ TEST(ExtrapCapped, U0IsTheSafetyFactorTimesTheCorrectionPlusTheScatter) {
 
 TEST(ExtrapCapped, MethodNames) {
   EXPECT_EQ(parse_method("capped", "--method"), ExtrapolationMethod::kCapped);
-  EXPECT_EQ(ExtrapolationOptions{}.method, ExtrapolationMethod::kCapped);
+  EXPECT_EQ(parse_method("averaged", "--method"), ExtrapolationMethod::kAveraged);
+  EXPECT_EQ(ExtrapolationOptions{}.method, ExtrapolationMethod::kAveraged);  // the default
   EXPECT_EQ(nlohmann::json(to_json(extrapolate(test::default_h(), test::power_law(test::default_h(), 10, 1, 3))))
-                ["fits"]["capped"]["p"], 2.1);
+                ["fits"]["capped"]["p"], 2.1);  // averaged extrapolates with the capped fit
 }
 
 }  // namespace

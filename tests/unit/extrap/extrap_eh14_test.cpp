@@ -16,9 +16,7 @@ namespace gridfree {
 namespace {
 
 ExtrapolationResult eh14(const std::vector<double>& h, const std::vector<double>& f) {
-  ExtrapolationOptions opts;
-  opts.method = ExtrapolationMethod::kEh14;
-  return extrapolate(h, f, opts);
+  return extrapolate(h, f, test::formula_of(ExtrapolationMethod::kEh14));
 }
 
 // U_i from EH14 eqs. 19-21 with ε_i = |f̂_i − f0| and the reported σ, Fs.

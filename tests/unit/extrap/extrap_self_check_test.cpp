@@ -21,8 +21,8 @@ struct FakeExtrapolator {
   std::size_t whole = 0;
   std::function<double(double)> u1_of;
   WindowFit operator()(const std::vector<double>& h, const std::vector<double>& f) const {
-    if (h.size() == whole) return {"converged", 10.0, 0.1, f.front(), 0.1};
-    return {"pre-asymptotic", f.front(), u1_of(h.front()), f.front(), u1_of(h.front())};
+    if (h.size() == whole) return {"converged", 10.0, 0.1, f.front(), 0.1, {}, {}};
+    return {"pre-asymptotic", f.front(), u1_of(h.front()), f.front(), u1_of(h.front()), {}, {}};
   }
 };
 
@@ -78,7 +78,7 @@ TEST(SelfCheck, AWindowIsCoveredWhenTheAnswerIsWithinItsU1) {
 TEST(SelfCheck, TooFewGridsOrNoReference) {
   const FakeExtrapolator fake{5, [](double) { return 1.0; }};
   EXPECT_EQ(coverage_self_check({1, 2, 3, 4, 5}, {1, 2, 3, 4, 5}, fake).status, "too_few_grids");
-  const auto no_f0 = [](const std::vector<double>&, const std::vector<double>&) { return WindowFit{"unreliable", {}, {}, {}, {}}; };
+  const auto no_f0 = [](const std::vector<double>&, const std::vector<double>&) { return WindowFit{"unreliable", {}, {}, {}, {}, {}, {}}; };
   const CoverageCheck c = coverage_self_check({1, 2, 3, 4, 5, 6}, {1, 2, 3, 4, 5, 6}, no_f0);
   EXPECT_EQ(c.status, "no_reference");
   EXPECT_TRUE(c.windows.empty());
@@ -87,8 +87,8 @@ TEST(SelfCheck, TooFewGridsOrNoReference) {
 
 TEST(SelfCheck, WindowsWithoutAnUncertaintyAreNotJudged) {
   const auto fit = [](const std::vector<double>& h, const std::vector<double>& f) {
-    if (h.size() == 6) return WindowFit{"converged", 10.0, 0.1, f.front(), 0.1};
-    return WindowFit{"insufficient_grids", {}, {}, f.front(), {}};
+    if (h.size() == 6) return WindowFit{"converged", 10.0, 0.1, f.front(), 0.1, {}, {}};
+    return WindowFit{"insufficient_grids", {}, {}, f.front(), {}, {}, {}};
   };
   const CoverageCheck c = coverage_self_check({1, 2, 3, 4, 5, 6}, std::vector<double>(6, 9.0), fit);
   EXPECT_EQ(c.windows.size(), 3u);

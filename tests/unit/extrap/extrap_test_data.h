@@ -43,10 +43,16 @@ inline std::vector<double> oscillatory_f(const std::vector<double>& h) {
 
 // The paper's procedure as published (--method fm). The default, capped,
 // differs from it only when the observed order exceeds p_high.
+// A method's own formulas, before the bias checks widen U (bias_checks.h).
+inline ExtrapolationOptions formula_of(ExtrapolationMethod method, ExtrapolationOptions opts = {}) {
+  opts.method = method;
+  opts.leave_one_out = false;
+  return opts;
+}
+
 inline ExtrapolationResult extrapolate_fm(const std::vector<double>& h, const std::vector<double>& f,
                                           ExtrapolationOptions opts = {}) {
-  opts.method = ExtrapolationMethod::kFm;
-  return extrapolate(h, f, opts);
+  return extrapolate(h, f, formula_of(ExtrapolationMethod::kFm, opts));
 }
 
 }  // namespace gridfree::test

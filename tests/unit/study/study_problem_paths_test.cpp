@@ -89,6 +89,10 @@ TEST(StudyProblemPaths, EachProblemOnceInTheFileWithoutFollowOns) {
        {"/grids/finest_delta_star"}},
       {"an adaptive ladder too coarse", [](json& d) { d["grids"] = adaptive_grids(150, 1.5, 10); },
        {"/grids/coarsest_delta_star"}},
+      {"a declared order of 0", [](json& d) { d["extrapolation"] = {{"expected_order", 0}}; },
+       {"/extrapolation/expected_order"}},
+      {"a declared order that is text", [](json& d) { d["extrapolation"] = {{"expected_order", "second"}}; },
+       {"/extrapolation/expected_order"}},
   };
   for (const auto& row : table) {
     json doc = quickstart_document();

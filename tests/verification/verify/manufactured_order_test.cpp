@@ -55,6 +55,21 @@ TEST(CodeVerification, ResultsDoNotDependOnTheThreadCount) {
   }
 }
 
+// --grids: every study runs on the grids given (h = 1/n), not the default set.
+TEST(CodeVerification, GridsOptionSetsEveryStudysGrids) {
+  VerifyOptions options;
+  options.grids = {12, 16, 24};
+  options.schemes = {Limiter::kFou};
+  const auto studies = run_code_verification(options);
+  ASSERT_EQ(studies.size(), 2u);
+  for (const auto& s : studies) {
+    EXPECT_EQ(s.grids, options.grids) << s.equation;
+    ASSERT_EQ(s.h.size(), 3u);
+    EXPECT_DOUBLE_EQ(s.h[2], 1.0 / 24);
+    EXPECT_TRUE(s.failure.empty()) << s.failure;
+  }
+}
+
 TEST(ObservedOrder, ExactPowerLawGivesItsExponent) {
   // e = 3 h^1.5 on h = 1/4, 1/8: the formula must return 1.5 exactly.
   EXPECT_NEAR(observed_order({0.25, 0.125}, {3 * std::pow(0.25, 1.5), 3 * std::pow(0.125, 1.5)}), 1.5, 1e-12);

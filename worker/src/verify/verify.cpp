@@ -29,7 +29,9 @@ std::vector<OrderStudy> run_code_verification(const VerifyOptions& options) {
   std::vector<Limiter> schemes = options.schemes;
   if (schemes.empty())
     for (const auto& info : limiters()) schemes.push_back(info.limiter);
-  const std::vector<int> grids = options.quick ? std::vector<int>{16, 32, 64} : std::vector<int>{16, 32, 64, 128};
+  const std::vector<int> grids = !options.grids.empty() ? options.grids
+                                 : options.quick        ? std::vector<int>{16, 32, 64}
+                                                        : std::vector<int>{16, 32, 64, 128};
 
   // One solver per study: the flow study of each scheme, then the filter.
   std::vector<OrderStudy> studies;

@@ -19,6 +19,7 @@ namespace gridfree {
 
 struct VerifyOptions {
   bool quick = false;                  // fewer, coarser grids
+  std::vector<int> grids;              // cells per direction, coarse to fine; empty: the default set
   std::vector<Limiter> schemes;        // empty = every scheme
   std::function<void(const OrderStudy&)> on_study;  // progress
 };
