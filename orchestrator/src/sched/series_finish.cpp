@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/version.h"
+#include "extrap/value_format.h"
 #include "extrap/verdict.h"
 #include "report/report.h"
 #include "report/series_coverage.h"
@@ -45,26 +46,23 @@ VerdictRow verdict_row(const nlohmann::json& ex, int n_converged) {
   return {v.value, nlohmann::json(v.reasons).dump()};
 }
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-// "verdict converged: f0 = 1017.001 ± 1.478, finest f1 = 1015.872 ± 1.478 (RDE 0.15 %)" — never "ok".
+// "verdict converged: f0 = 1017.0 ± 1.5, finest f1 = 1015.9 ± 1.5 (RDE 0.15%)" — never "ok";
+// the digits U supports (extrap/value_format.h), as the report prints them.
 std::string verdict_log_text(const nlohmann::json& ex, const VerdictRow& verdict) {
   std::string out = "verdict " + verdict.value;
   const auto f0 = num(ex, "f0");
-  // Each value with its own interval: f0 ± U₀, the finest grid's f₁ ± U₁.
-  if (f0) out += ": f0 = " + fixed(*f0, 3);
-  if (const auto u0 = num(ex, "u0"); f0 && u0) out += " ± " + fixed(*u0, 3);
+  const auto u0 = num(ex, "u0");
+  std::optional<double> f1, u, rde;
   if (ex.contains("grids") && ex["grids"].is_array() && !ex["grids"].empty()) {
-    const auto f1 = num(ex["grids"][0], "f");
-    const auto u = num(ex["grids"][0], "u");
-    const auto rde = num(ex["grids"][0], "rde");
-    if (f1 && u) out += ", finest f1 = " + fixed(*f1, 3) + " ± " + fixed(*u, 3);
-    if (rde) out += " (RDE " + fixed(100 * *rde, 2) + " %)";
+    f1 = num(ex["grids"][0], "f");
+    u = num(ex["grids"][0], "u");
+    rde = num(ex["grids"][0], "rde");
   }
+  // Each value with its own interval: f0 ± U₀, the finest grid's f₁ ± U₁;
+  // without U₀, f0 to the digits U₁ supports.
+  if (f0) out += ": f0 = " + (u0 ? format_value_u(*f0, u0) : format_value_for_u(*f0, u));
+  if (f1 && u) out += ", finest f1 = " + format_value_u(*f1, u);
+  if (rde) out += " (RDE " + format_percent_fixed(*rde) + ")";
   const auto reasons = nlohmann::json::parse(verdict.reasons_json, nullptr, false);
   if (verdict.value != "converged" && reasons.is_array() && !reasons.empty() && reasons[0].is_string())
     out += "; " + reasons[0].get<std::string>();

@@ -204,7 +204,7 @@ TEST_F(ReportWriter, MarkdownLinksEveryChartAndTable) {
     EXPECT_NE(md.find("](" + csv.filename().string() + ")"), std::string::npos) << csv;
   }
   EXPECT_NE(md.find("| PC1 superbee fwhm6 bvk |"), std::string::npos);
-  EXPECT_NE(md.find("40%"), std::string::npos);  // the drag difference, shown in percent
+  EXPECT_NE(md.find("40.0%"), std::string::npos);  // the drag difference, in percent to 3 digits
 }
 
 TEST_F(ReportWriter, StaleSeriesChartsAreRemovedOtherFilesKept) {
