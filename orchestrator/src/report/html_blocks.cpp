@@ -47,7 +47,8 @@ std::string figure(const NamedChart& c, const std::string& file_href, const std:
 std::string verdict_block(const VerdictItem& v, const std::string& href) {
   const std::string label = href.empty() ? xml_escape(v.label)
                                          : "<a href=\"" + xml_escape(href) + "\">" + xml_escape(v.label) + "</a>";
-  std::string out = "<div class=\"verdict verdict-" + xml_escape(v.verdict) + "\"><p><strong>" + label +
+  std::string out = "<div class=\"verdict verdict-" + xml_escape(v.verdict) + "\" id=\"v-" +
+                    xml_escape(slugify(v.label)) + "\"><p><strong>" + label +
                     "</strong>: <span class=\"word\">" + xml_escape(v.verdict) + "</span> — " +
                     xml_escape(v.headline) + "</p>\n<ul>\n";
   for (const auto& r : v.reasons) out += "<li>" + xml_escape(r) + "</li>\n";

@@ -61,7 +61,8 @@ std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, s
     out.push_back({"fig2_rde_" + name + ".svg",
                    "RDE of every grid (docs/PHYSICS.md §8), aggregated " +
                        (factor.empty() ? std::string("over all series") : "by " + factor) +
-                       ": the median and the 10–90 % band at each Δ*; each series' own RDE chart is on its page.",
+                       ": the median and the 10–90 % band at each Δ*; each series' grids with their RDE are in the grids "
+                       "table of its page.",
                    rde_band_chart(series, factor, target_rde), {}});
   }
   std::vector<SeriesSummary> sample;

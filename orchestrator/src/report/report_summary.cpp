@@ -4,6 +4,7 @@
 
 #include "extrap/verdict.h"
 #include "report/series_coverage.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -51,7 +52,7 @@ VerdictItem verdict_item(const SeriesSummary& s) {
     item.headline = "f0 = " + (u0 ? format_with_uncertainty(*f0, u0) + " (U₀)" : format_to_uncertainty_digits(*f0, u));
     if (!grids.empty())
       item.headline += std::string("; finest grid ") + (s.series.quantity.empty() ? "Δ*" : "h") + " = " +
-                       format_g(grids.front().h, 4) + ": f₁ = " +
+                       format_cell_size(grids.front().h) + ": f₁ = " +
                        format_with_uncertainty(grids.front().f, u) +
                        (u ? " (U₁, RDE " + format_percent(grids.front().rde) + ")" : "");
   } else {

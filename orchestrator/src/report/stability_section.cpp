@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "report/atomic_file.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -151,7 +152,7 @@ Table stability_wide_table(const StabilityMap& m) {
   Table t;
   t.columns.push_back(stab_text("series"));
   const std::string axis = m.external ? "h" : "Δ*", csv = m.external ? "h_" : "delta_star_";
-  for (double h : m.columns) t.columns.push_back(stab_text(csv + format_g(h, 3), axis + " " + format_g(h, 3)));
+  for (double h : m.columns) t.columns.push_back(stab_text(csv + format_cell_size(h), axis + " " + format_cell_size(h)));
   for (const auto& r : m.rows) {
     std::vector<Cell> row{text_cell(r.label)};
     for (const auto& c : r.cells) row.push_back(text_cell(stability_cell_text(c)));
@@ -192,7 +193,7 @@ std::string stability_svg(const StabilityMap& m) {
       const StabilityCell& cell = row.cells[std::size_t(c)];
       if (!cell.present) continue;
       const int x = label_w + c * kCellW;
-      std::string tip = row.label + ", Δ* " + format_g(cell.delta_star, 4) + ": " + cell.outcome;
+      std::string tip = row.label + ", Δ* " + format_cell_size(cell.delta_star) + ": " + cell.outcome;
       if (cell.outcome == "converged") tip += " in " + std::to_string(cell.iterations) + " outer iterations";
       else if (!cell.reason.empty()) tip += ": " + cell.reason;
       if (cell.remedy_from > 0) tip += "; " + remedy_note(cell.remedy_from);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "extrap/value_format.h"
 #include "report/table_print_fit.h"
 #include "report/text_format.h"
 
@@ -20,6 +21,10 @@ Cell percent_cell(const std::optional<double>& fraction, int shown_digits) {
 }
 
 Cell integer_cell(long long value) { return text_cell(std::to_string(value)); }
+
+Cell value_cell(const std::optional<double>& value, const std::optional<double>& u) {
+  return {format_exact(value), value ? format_value_for_u(*value, u, 8) : std::string()};
+}
 
 namespace {
 

@@ -35,6 +35,10 @@ Cell text_cell(std::string value);
 Cell number_cell(const std::optional<double>& value, int shown_digits = 6);
 Cell percent_cell(const std::optional<double>& fraction, int shown_digits = 3);
 Cell integer_cell(long long value);
+// A value shown to the decimal place `u` supports (extrap/value_format.h),
+// so a column of values of one U keeps its trailing zeros ("1021.0000"
+// beside "1021.0002", not "1021").
+Cell value_cell(const std::optional<double>& value, const std::optional<double>& u);
 
 // `with_header` false: the rows alone (a table written in parts).
 std::string to_csv(const Table& table, bool with_header = true);

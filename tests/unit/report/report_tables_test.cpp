@@ -113,7 +113,7 @@ TEST(ReportDifferences, DifferenceAgainstCombinedUncertaintyAndVerdicts) {
 }
 
 TEST(ReportTables, PowerLawPAndCShownOnlyWhenThePowerLawIsChosen) {
-  const Table t = series_table(test::synthetic_summaries());
+  const Table t = series_table(test::synthetic_summaries(), 0.5, 2.1);
   std::size_t p = 0, c = 0, method = 0;
   for (std::size_t i = 0; i < t.columns.size(); ++i) {
     if (t.columns[i].name == "p") p = i;
@@ -199,7 +199,7 @@ TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
-  const Table t = series_table(test::synthetic_summaries());
+  const Table t = series_table(test::synthetic_summaries(), 0.5, 2.1);
   ASSERT_EQ(t.rows.size(), 3u);
   auto col = [&](const std::string& name) {
     for (std::size_t i = 0; i < t.columns.size(); ++i) {
@@ -241,12 +241,20 @@ TEST(ReportTables, FailuresListEveryUnusableGridWithItsReason) {
 }
 
 TEST(ReportTables, GciTableComparesWithF0) {
-  const Table t = gci_table(test::synthetic_summaries());
+  const Table t = gci_table(test::synthetic_summaries(), 0.5, 2.1);
   // A and B: 4 grids → 2 triplets each; C: 3 grids → 1 triplet.
   ASSERT_EQ(t.rows.size(), 5u);
   // A's second triplet: φ_ext = 1000 + 100 → (φ_ext − f0)/f0 = 0.1.
-  EXPECT_DOUBLE_EQ(std::stod(t.rows[1][10].exact), 0.1);
-  EXPECT_EQ(t.rows[4][10].exact, "");  // C has no f0
+  EXPECT_DOUBLE_EQ(std::stod(t.rows[1][11].exact), 0.1);
+  EXPECT_EQ(t.rows[4][11].exact, "");  // C has no f0
+  // The usable column applies the stability section's rule to each row.
+  ASSERT_EQ(t.columns[9].name, "usable");
+  for (const auto& row : t.rows) {
+    const std::string& use = row[9].exact;
+    EXPECT_TRUE(use == "usable" || use == "divergent" || use == "oscillatory" || use == "no p" ||
+                use.rfind("p outside [0.5, 2.1]", 0) == 0)
+        << use;
+  }
 }
 
 // The verdict line prints f0 without ± and the finest grid as f₁ ± U₁: U₁ is
