@@ -34,6 +34,7 @@ table.answer-table { font-size: 0.95em; }
   .chart-narrow svg { width: 100%; max-width: 420px; }
   figure.stability-figure svg { max-width: none; }  /* 1:1 (11 px text), scrolling sideways in its box */
   table.data { font-size: 0.8em; }
+  table.data td:first-child { white-space: normal; min-width: 7em; }  /* the name wraps, f0 ± U stays in view */
   h1 { font-size: 1.3em; }
   dl.summary { display: block; font-size: 0.9em; } dl.summary dd { margin: 0 0 0.3em 1em; }
 }
@@ -58,6 +59,10 @@ div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em;
   .charts { display: block; }
   .chart-narrow { display: none; } .chart-wide { display: block; }
   figure { break-inside: avoid; } h2, h3 { break-after: avoid; }
+  /* No orphan rows: a table's last three rows and the note under it stay together. */
+  table.data tr { break-inside: avoid; }
+  table.data tbody tr:nth-last-child(-n+2) { break-before: avoid; }
+  .scroll + p.note { break-before: avoid; }
   nav.toc { columns: 1; }
   .filter { display: none; }
 }

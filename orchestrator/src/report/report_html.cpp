@@ -17,6 +17,7 @@
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/series_coverage.h"
 #include "report/stability_section.h"
 #include "report/text_format.h"
 #include "report/verdict_counts.h"
@@ -115,7 +116,7 @@ std::string full_page_body(const ReportContent& c) {
   body += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
   body += table_section(c.cost_table, "cost", "No series has an extrapolation yet.");
   body += table_section(c.coverage_table, "coverage",
-                        "No series checked yet: a series needs all its grids and at least 6 of them converged.");
+                        "No series checked: " + coverage_not_made(c.series) + ".");
   body += "<h2 id=\"charts\">Charts</h2>\n<div class=\"charts\">\n";
   for (const auto& chart : c.charts) {
     if (!per_series(chart)) body += figure(chart);
@@ -144,7 +145,7 @@ std::string summary_body(const ReportContent& c) {
   body += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.", kShownRows);
   body += table_section(c.cost_table, "cost", "No series has an extrapolation yet.", kShownRows);
   body += table_section(c.coverage_table, "coverage",
-                        "No series checked yet: a series needs all its grids and at least 6 of them converged.",
+                        "No series checked: " + coverage_not_made(c.series) + ".",
                         kShownRows);
   body += "<h2 id=\"charts\">Charts</h2>\n<p class=\"note\">With " + std::to_string(c.series.size()) +
           " series the study charts aggregate (RDE: median and 10–90 % band per factor level) or sample "

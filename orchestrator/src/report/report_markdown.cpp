@@ -8,6 +8,7 @@
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/series_coverage.h"
 #include "report/stability_section.h"
 #include "report/text_format.h"
 #include "report/first_screen.h"
@@ -72,7 +73,7 @@ std::string render_markdown(const ReportContent& c) {
   out += table_section(c.differences_table, "No two series differ in exactly one factor.", cap);
   out += table_section(c.cost_table, "No series has an extrapolation yet.", cap);
   out += table_section(c.coverage_table,
-                       "No series checked yet: a series needs all its grids and at least 6 of them converged.", cap);
+                       "No series checked: " + coverage_not_made(c.series) + ".", cap);
   out += "## Charts\n\n";
   if (!c.export_note.empty()) out += c.export_note + "\n\n";
   for (const auto& chart : c.charts) {
