@@ -107,7 +107,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.alignment_table = {"alignment.csv", "Alignment check", alignment_table(c.alignment)};
   c.verdict_count_table = {"verdict_counts.csv", "Verdicts per factor level", verdict_count_table(c.series)};
   if (c.layout == ReportLayout::summary) {
-    c.charts = study_charts(c.series, data.target_rde, c.layout);
+    c.charts = study_charts(c.series, data.target_rde, c.layout, data.p_low, data.p_high);
     for (std::size_t i = 0; i < c.series.size(); ++i) c.series_table.table.rows[i][0].href = series_page_file(c, i);
   } else {
     c.charts = report_charts(c.series, data.target_rde);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "report/first_screen.h"
+#include "report/report_charts.h"
 #include "report/report_tables.h"
 #include "report/series_concerns.h"
 #include "report/series_filter.h"
@@ -70,6 +71,15 @@ TEST(SeriesFilter, FieldsAreTheSeriesTableColumnsWithoutProse) {
   const std::string script = series_filter_script(t);
   EXPECT_EQ(script.find("</", 1), script.rfind("</script>"));  // no early end of the script
   EXPECT_NE(script.find("\"pre-asymptotic\""), std::string::npos);
+}
+
+// The speed-accuracy charts of a summary draw the series that most need a
+// look (with an f0: C has none) and then the cheapest converged ones.
+TEST(SpeedAccuracySelection, WorstWithAnF0ThenCheapestConverged) {
+  const auto series = test::synthetic_summaries();
+  EXPECT_EQ(speed_accuracy_selection(series, 0.5, 2.1, 4, 3), (std::vector<std::size_t>{1, 0}));
+  EXPECT_EQ(speed_accuracy_selection(series, 0.5, 2.1, 0, 3), (std::vector<std::size_t>{0}));
+  EXPECT_EQ(speed_accuracy_selection(series, 0.5, 2.1, 4, 0), (std::vector<std::size_t>{1}));
 }
 
 }  // namespace
