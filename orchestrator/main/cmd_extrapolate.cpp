@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
@@ -51,7 +52,7 @@ int run_extrapolate(const ExtrapolateArgs& args) {
     std::cout << out.dump(2) << '\n';
     return to_int(ExitCode::kOk);
   } catch (const InputError& e) {
-    std::cerr << "error: invalid input\n" << e.what() << '\n';
+    print_input_error(std::cerr, e);
     return to_int(ExitCode::kInvalidInput);
   }
 }

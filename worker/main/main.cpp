@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   spdlog::set_default_logger(spdlog::stderr_color_mt("gridfree-worker"));
   spdlog::set_pattern("%^[%l]%$ %v");
 
-  CLI::App app{"gridfree-worker: steady gas flow through one frozen particle bed on one grid"};
+  CLI::App app{"gridfree-worker: steady gas flow through one frozen particle bed on one grid", "gridfree-worker"};
   const std::string version = program_version_string("gridfree-worker");
   app.set_version_flag("--version,-V", version);
   app.require_subcommand(1);
