@@ -21,8 +21,9 @@ std::vector<std::pair<std::string, std::string>> summary_items(const ReportConte
                             " ≤ p ≤ " + format_g(d.p_high, 4) + ")"},
       {"Series", std::to_string(c.series.size())},
       {"Coverage self-check", coverage_summary(c.series)},
-      {"Grids", std::to_string(c.grids_total()) + " (" + std::to_string(c.grids_converged()) + " converged, " +
-                    std::to_string(c.grids_failed()) + " failed or not converged, " +
+      // Grids are "solved" (their solver converged); "converged" is a series' verdict.
+      {"Grids", std::to_string(c.grids_total()) + " (" + std::to_string(c.grids_converged()) + " solved, " +
+                    std::to_string(c.grids_failed()) + " failed (no value), " +
                     std::to_string(c.grids_pending()) + " pending)"},
       {"Written by", d.version},
   };

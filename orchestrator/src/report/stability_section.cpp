@@ -48,7 +48,7 @@ struct OutcomeStyle {
 
 // Colour-blind-safe fills (Okabe–Ito, lightened for the converged cells).
 constexpr OutcomeStyle kOutcomeStyles[] = {
-    {"converged", "#c7eadb", "converged (✓ outer iterations)"},
+    {"converged", "#c7eadb", "solved (✓ outer iterations)"},
     {"stalled", "#f0e442", "stalled (a limit cycle: numerics.stall_window)"},
     {"iteration_cap", "#e69f00", "cap: not converged at numerics.max_iterations"},
     {"diverged", "#d55e00", "diverged"},
@@ -102,7 +102,8 @@ std::string stability_intro(const StabilityMap& m) {
   return std::string("Stability: the outcome of every grid (one row per series, one column per ") +
          (m.external ? "h" : "Δ*") + ", coarsest on the left). " +
          std::to_string(m.series_with_failures) + " of " + std::to_string(m.series_total) +
-         " series have a failed grid. A converged cell gives its outer iterations; hover over a cell for the "
+         " series have a failed grid. A solved cell (its solver converged) gives its outer iterations; hover over a "
+         "cell for the "
          "worker's reason. The GCI of a triplet is counted usable when its convergence is monotone and its "
          "order p lies in the study's accepted range; least squares is usable when it gave f0.";
 }

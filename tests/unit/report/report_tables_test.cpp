@@ -42,7 +42,7 @@ TEST(ReportSeries, SummaryCountsAndSortsGrids) {
   EXPECT_EQ(s[2].pending, 1);
   EXPECT_TRUE(s[2].insufficient());
   EXPECT_TRUE(s[2].incomplete);
-  EXPECT_NE(s[2].note().find("insufficient grids (3 converged, 4 needed)"), std::string::npos);
+  EXPECT_NE(s[2].note().find("insufficient grids (3 solved, 4 needed)"), std::string::npos);
   EXPECT_NE(s[2].note().find("incomplete (1 of 4 grids pending)"), std::string::npos);
   EXPECT_FALSE(s[2].f0().has_value());
   // |f − f0|/f0 of A's coarsest grid: 16/1000.

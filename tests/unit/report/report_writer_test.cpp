@@ -179,7 +179,7 @@ TEST_F(ReportWriter, HtmlIsSelfContainedAndWellFormed) {
   // Every chart inline twice (wide and narrow), and the stability map (stability_map.svg, not a chart).
   EXPECT_EQ(test::count_of(html, "<svg"), 2 * static_cast<int>(files_.svg.size()) + 1);
   EXPECT_NE(html.find("<title>Grid-convergence report: synthetic &lt;study&gt;</title>"), std::string::npos);
-  EXPECT_NE(html.find("insufficient grids (3 converged, 4 needed)"), std::string::npos);
+  EXPECT_NE(html.find("insufficient grids (3 solved, 4 needed)"), std::string::npos);
   EXPECT_NE(html.find("(incomplete)"), std::string::npos);
   EXPECT_NE(html.find("residual grew by 1e6"), std::string::npos);
 }
