@@ -19,6 +19,7 @@
 #include "extrap/extrapolation.h"
 #include "extrap/self_check.h"
 #include "extrap/series_io.h"
+#include "extrap/value_format.h"
 
 namespace gridfree::cli {
 namespace {
@@ -49,6 +50,13 @@ int run_extrapolate(const ExtrapolateArgs& args) {
       out["self_check"] = to_ordered_json(check);
       std::cerr << check.summary() << '\n';
     }
+    // The answer for people on stderr, in the digits the report prints
+    // (extrap/value_format.h); stdout stays the JSON.
+    const GridUncertainty* finest = result.grids.empty() ? nullptr : &result.grids.front();
+    const std::optional<double> f1 = finest ? std::optional<double>(finest->f) : std::nullopt;
+    std::cerr << verdict_line(result.verdict.value, result.f0, result.u0, f1, finest ? finest->u : std::nullopt,
+                              finest ? finest->rde : std::nullopt)
+              << '\n';
     std::cout << out.dump(2) << '\n';
     return to_int(ExitCode::kOk);
   } catch (const InputError& e) {

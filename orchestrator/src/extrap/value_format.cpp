@@ -93,6 +93,16 @@ std::optional<double> f0_digits_u(const std::optional<double>& u0, const std::op
   return usable_u(u0) ? u0 : u1;
 }
 
+std::string verdict_line(const std::string& verdict, const std::optional<double>& f0, const std::optional<double>& u0,
+                         const std::optional<double>& f1, const std::optional<double>& u1,
+                         const std::optional<double>& rde) {
+  std::string out = "verdict " + verdict;
+  if (f0) out += ": f0 = " + (u0 ? format_value_u(*f0, u0) : format_value_for_u(*f0, u1));
+  if (f1 && u1) out += ", finest f1 = " + format_value_u(*f1, u1);
+  if (rde) out += " (RDE " + format_percent_fixed(*rde) + ")";
+  return out;
+}
+
 std::string format_cell_size(double h) {
   if (!std::isfinite(h)) return non_finite(h);
   return c_printf("%.*g", 4, h);

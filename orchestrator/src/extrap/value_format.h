@@ -50,6 +50,14 @@ double rounded_for_u(double value, const std::optional<double>& u);
 // else the finest grid's U₁ (report headline, console and verdict agree).
 std::optional<double> f0_digits_u(const std::optional<double>& u0, const std::optional<double>& u1);
 
+// The console's line for one extrapolation (`run` as a series finishes,
+// `extrapolate` on stderr): "verdict converged: f0 = 1017.0 ± 1.5, finest
+// f1 = 1015.9 ± 1.5 (RDE 0.149%)" — f0 ± U₀ (without U₀, f0 to U₁'s digits),
+// f₁ ± U₁ of the finest grid; absent numbers are left out.
+std::string verdict_line(const std::string& verdict, const std::optional<double>& f0, const std::optional<double>& u0,
+                         const std::optional<double>& f1, const std::optional<double>& u1,
+                         const std::optional<double>& rde);
+
 // A cell size (Δ* or h) everywhere it is printed for people: 4 significant
 // digits ("1.295", "0.7861", "12.5").
 std::string format_cell_size(double h);

@@ -49,20 +49,14 @@ VerdictRow verdict_row(const nlohmann::json& ex, int n_converged) {
 // "verdict converged: f0 = 1017.0 ± 1.5, finest f1 = 1015.9 ± 1.5 (RDE 0.15%)" — never "ok";
 // the digits U supports (extrap/value_format.h), as the report prints them.
 std::string verdict_log_text(const nlohmann::json& ex, const VerdictRow& verdict) {
-  std::string out = "verdict " + verdict.value;
-  const auto f0 = num(ex, "f0");
-  const auto u0 = num(ex, "u0");
   std::optional<double> f1, u, rde;
   if (ex.contains("grids") && ex["grids"].is_array() && !ex["grids"].empty()) {
     f1 = num(ex["grids"][0], "f");
     u = num(ex["grids"][0], "u");
     rde = num(ex["grids"][0], "rde");
   }
-  // Each value with its own interval: f0 ± U₀, the finest grid's f₁ ± U₁;
-  // without U₀, f0 to the digits U₁ supports.
-  if (f0) out += ": f0 = " + (u0 ? format_value_u(*f0, u0) : format_value_for_u(*f0, u));
-  if (f1 && u) out += ", finest f1 = " + format_value_u(*f1, u);
-  if (rde) out += " (RDE " + format_percent_fixed(*rde) + ")";
+  // Each value with its own interval: f0 ± U₀, the finest grid's f₁ ± U₁.
+  std::string out = verdict_line(verdict.value, num(ex, "f0"), num(ex, "u0"), f1, u, rde);
   const auto reasons = nlohmann::json::parse(verdict.reasons_json, nullptr, false);
   if (verdict.value != "converged" && reasons.is_array() && !reasons.empty() && reasons[0].is_string())
     out += "; " + reasons[0].get<std::string>();

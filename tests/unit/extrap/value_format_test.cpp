@@ -98,6 +98,16 @@ TEST(ValueFormat, DigitsOfF0ComeFromU0ElseU1) {
   EXPECT_FALSE(f0_digits_u(std::nullopt, std::nullopt));
 }
 
+TEST(ValueFormat, VerdictLineOfTheConsole) {
+  EXPECT_EQ(verdict_line("converged", 1017.04, 1.5, 1015.855, 1.4637, 0.00149),
+            "verdict converged: f0 = 1017.0 ± 1.5, finest f1 = 1015.9 ± 1.5 (RDE 0.149%)");
+  // Without U₀: f0 to the digits of U₁, no "±" after it.
+  EXPECT_EQ(verdict_line("pre-asymptotic", 1017.04, std::nullopt, 1015.855, 0.37, std::nullopt),
+            "verdict pre-asymptotic: f0 = 1017.04, finest f1 = 1015.86 ± 0.37");
+  EXPECT_EQ(verdict_line("insufficient_grids", std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt),
+            "verdict insufficient_grids");
+}
+
 TEST(ValueFormat, CellSizeHasOnePrecision) {
   EXPECT_EQ(format_cell_size(1.295), "1.295");
   EXPECT_EQ(format_cell_size(0.78612), "0.7861");
