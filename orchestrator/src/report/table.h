@@ -50,6 +50,8 @@ Table first_rows(const Table& table, std::size_t n);
 std::map<std::string, std::vector<std::size_t>> rows_by(const Table& table, const std::string& column);
 // The same columns with the given rows, in the given order.
 Table rows_at(const Table& table, const std::vector<std::size_t>& rows);
+// Markdown and HTML show a numeric column in one notation: when one of its
+// plain numbers is in exponent form, all are (same significant digits).
 std::string to_markdown(const Table& table);
 // <table class="... fit-..."> with <thead>/<tbody>; cells' classes carry
 // alignment, the fit-... class the table's print layout (table_print_fit.h).

@@ -272,5 +272,21 @@ TEST(ReportTables, VerdictHeadlineGivesUOnlyWithTheFinestGrid) {
   EXPECT_EQ(items[2].headline, "no extrapolated value");
 }
 
+// No column mixes notations: one cell in exponent form puts the column's
+// other plain numbers in it (their digits kept); other columns and cells
+// with more than a number stay as they are.
+TEST(ReportTables, ANumericColumnHasOneNotation) {
+  Table t;
+  t.columns = {Column{"c", "", false, true}, Column{"d", "", false, true}, Column{"e", "", false, true}};
+  t.rows = {{number_cell(1.2e-5, 3), number_cell(0.5, 3), text_cell("1017.0 ± 1.5")},
+            {number_cell(0.000109, 3), number_cell(12.25, 4), text_cell("1.5e-06")},
+            {number_cell(8, 3), text_cell(""), text_cell("n/a")}};
+  const std::string md = to_markdown(t);
+  EXPECT_NE(md.find("| 1.2e-05 | 0.5 | 1017.0 ± 1.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 1.09e-04 | 12.25 | 1.5e-06 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 8e+00 |  | n/a |"), std::string::npos) << md;
+  EXPECT_NE(to_html(t).find("<td class=\"num\">1.09e-04</td>"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace gridfree
