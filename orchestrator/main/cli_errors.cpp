@@ -3,7 +3,6 @@
 #include "cli_errors.h"
 
 #include <cctype>
-#include <sstream>
 
 namespace gridfree::cli {
 
@@ -23,10 +22,6 @@ std::string failure_message(const CLI::App* app, const CLI::Error& e) {
   return "error: " + what + "\nrun '" + command + " --help' for the options\n";
 }
 
-void print_input_error(std::ostream& out, const InputError& e) {
-  std::istringstream lines(e.what());
-  for (std::string line; std::getline(lines, line);)
-    if (!line.empty()) out << "error: " << line << '\n';
-}
+void print_input_error(std::ostream& out, const InputError& e) { out << error_lines(e); }
 
 }  // namespace gridfree::cli

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : to_int(ExitCode::kInvalidInput);
   } catch (const InputError& e) {
-    std::cerr << "error: invalid input\n" << e.what() << '\n';
+    std::cerr << error_lines(e);
     return to_int(ExitCode::kInvalidInput);
   } catch (const std::exception& e) {
     std::cerr << "error: internal: " << e.what() << '\n';

@@ -102,6 +102,10 @@ TEST(CommandNamesCli, EveryUserErrorHasOneStyleWithoutTheBuildPath) {
       at = at == std::string::npos ? r.err.size() : at + 1;
     }
   }
+  // The worker prints its input errors the same way.
+  const CommandRun worker = run_executable("gridfree-worker", "solve missing.json", dir);
+  EXPECT_EQ(worker.exit_code, 2) << worker.err;
+  EXPECT_EQ(worker.err.rfind("error: missing.json: ", 0), 0u) << worker.err;
   const CommandRun help = run_executable("gridfree", "help run", dir);
   EXPECT_NE(help.out.find("Usage: gridfree run"), std::string::npos) << help.out;
   const auto slurm = help.out.find("Slurm (--executor slurm only):");
