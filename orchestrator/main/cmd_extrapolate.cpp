@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
@@ -22,6 +23,7 @@
 #include "extrap/extrapolation.h"
 #include "extrap/self_check.h"
 #include "extrap/series_io.h"
+#include "extrap/value_format.h"
 
 namespace gridfree::cli {
 namespace {
@@ -56,13 +58,20 @@ int run_extrapolate(const ExtrapolateArgs& args) {
       demote_if_flagged(*check, series.h, result.verdict);
       std::cerr << check->summary() << '\n';
     }
+    // The answer for people on stderr, in the digits the report prints
+    // (extrap/value_format.h); stdout stays the JSON.
+    const GridUncertainty* finest = result.grids.empty() ? nullptr : &result.grids.front();
+    const std::optional<double> f1 = finest ? std::optional<double>(finest->f) : std::nullopt;
+    std::cerr << verdict_line(result.verdict.value, result.f0, result.u0, f1, finest ? finest->u : std::nullopt,
+                              finest ? finest->rde : std::nullopt)
+              << '\n';
     auto out = to_ordered_json(result);
     out["coverage"] = measured_coverage_json(opts.method, opts.expected_order.has_value());
     if (check) out["self_check"] = to_ordered_json(*check);
     std::cout << out.dump(2) << '\n';
     return to_int(ExitCode::kOk);
   } catch (const InputError& e) {
-    std::cerr << "error: invalid input\n" << e.what() << '\n';
+    print_input_error(std::cerr, e);
     return to_int(ExitCode::kInvalidInput);
   }
 }

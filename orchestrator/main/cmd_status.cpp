@@ -103,11 +103,11 @@ void add_status_command(CLI::App& app, int& exit_code) {
       if (id && !out.empty()) out[0]["extrapolation"] = extrapolation_json(*store, *id);
       std::cout << out.dump(2) << '\n';
     } else {
-      std::printf("%-28s %-10s %6s %6s %7s %8s %6s %6s %9s %9s %8s\n", "study", "status", "jobs", "queued",
-                  "running", "orphaned", "done", "failed", "cancelled", "converged", "series");
+      std::printf("%-28s %-10s %6s %6s %7s %8s %6s %6s %9s %9s %11s\n", "study", "status", "jobs", "queued",
+                  "running", "orphaned", "done", "failed", "cancelled", "converged", "series done");
       for (const auto& s : rows) {
         const RunningJobs r = running_of(s.id);
-        std::printf("%-28s %-10s %6d %6d %7zu %8zu %6d %6d %9d %9d %4d/%-3d\n", s.name.c_str(),
+        std::printf("%-28s %-10s %6d %6d %7zu %8zu %6d %6d %9d %9d %7d/%-3d\n", s.name.c_str(),
                     shown_status(s, r).c_str(), s.jobs, s.queued, r.live.size(), r.orphaned.size(), s.done, s.failed,
                     s.cancelled, s.converged, s.series_done, s.series);
       }

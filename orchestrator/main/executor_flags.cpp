@@ -14,21 +14,38 @@ void add_executor_flags(CLI::App* sub, ExecutorFlags& f) {
   sub->add_option("--executor", f.kind, "where jobs run: local (this machine) or slurm (sbatch)")
       ->check(CLI::IsMember({"local", "slurm"}))
       ->capture_default_str();
-  sub->add_option("--slurm-profile", f.profile, "Slurm settings (JSON file); the flags below override it");
-  sub->add_option("--partition", f.slurm.partition, "Slurm partition");
-  sub->add_option("--account", f.slurm.account, "Slurm account");
-  sub->add_option("--qos", f.slurm.qos, "Slurm QOS");
-  sub->add_option("--constraint", f.slurm.constraint, "Slurm node constraint");
-  sub->add_option("--time", f.slurm.time_minutes, "Slurm time limit per job, minutes (default: cost model x margin)");
-  sub->add_option("--mem", f.slurm.mem_mb, "Slurm memory per job, MB (default: cost model x margin)");
-  sub->add_option("--cpus-per-task", f.slurm.cpus_per_task, "Slurm CPUs per job = worker threads (default 1)");
-  sub->add_option("--sbatch-arg", f.slurm.sbatch_args, "extra sbatch argument (repeatable)");
-  sub->add_option("--setup", f.slurm.setup, "shell line run before the worker, e.g. 'module load gcc' (repeatable)");
-  sub->add_option("--runs-dir", f.slurm.runs_dir, "run folders on storage the nodes share (default <db>.runs)");
-  sub->add_option("--max-queued", f.slurm.max_queued, "most jobs of this study in the Slurm queue (default 1000)");
-  sub->add_option("--array-size", f.slurm.array_size, "most jobs in one Slurm array (default 1000; 1 = no arrays)");
-  sub->add_option("--poll", f.slurm.poll_s, "squeue interval, seconds (default: adapts to run times)");
-  sub->add_option("--margin", f.margin, "cost-model estimate x margin = default --time/--mem (default 3)");
+  // The Slurm flags under their own heading of `help run` (local runs ignore them).
+  constexpr const char* kSlurmGroup = "Slurm (--executor slurm only)";
+  sub->add_option("--slurm-profile", f.profile, "Slurm settings (JSON file); the flags below override it")
+      ->group(kSlurmGroup);
+  sub->add_option("--partition", f.slurm.partition, "Slurm partition")
+      ->group(kSlurmGroup);
+  sub->add_option("--account", f.slurm.account, "Slurm account")
+      ->group(kSlurmGroup);
+  sub->add_option("--qos", f.slurm.qos, "Slurm QOS")
+      ->group(kSlurmGroup);
+  sub->add_option("--constraint", f.slurm.constraint, "Slurm node constraint")
+      ->group(kSlurmGroup);
+  sub->add_option("--time", f.slurm.time_minutes, "Slurm time limit per job, minutes (default: cost model x margin)")
+      ->group(kSlurmGroup);
+  sub->add_option("--mem", f.slurm.mem_mb, "Slurm memory per job, MB (default: cost model x margin)")
+      ->group(kSlurmGroup);
+  sub->add_option("--cpus-per-task", f.slurm.cpus_per_task, "Slurm CPUs per job = worker threads (default 1)")
+      ->group(kSlurmGroup);
+  sub->add_option("--sbatch-arg", f.slurm.sbatch_args, "extra sbatch argument (repeatable)")
+      ->group(kSlurmGroup);
+  sub->add_option("--setup", f.slurm.setup, "shell line run before the worker, e.g. 'module load gcc' (repeatable)")
+      ->group(kSlurmGroup);
+  sub->add_option("--runs-dir", f.slurm.runs_dir, "run folders on storage the nodes share (default <db>.runs)")
+      ->group(kSlurmGroup);
+  sub->add_option("--max-queued", f.slurm.max_queued, "most jobs of this study in the Slurm queue (default 1000)")
+      ->group(kSlurmGroup);
+  sub->add_option("--array-size", f.slurm.array_size, "most jobs in one Slurm array (default 1000; 1 = no arrays)")
+      ->group(kSlurmGroup);
+  sub->add_option("--poll", f.slurm.poll_s, "squeue interval, seconds (default: adapts to run times)")
+      ->group(kSlurmGroup);
+  sub->add_option("--margin", f.margin, "cost-model estimate x margin = default --time/--mem (default 3)")
+      ->group(kSlurmGroup);
 }
 
 namespace {

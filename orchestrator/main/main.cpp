@@ -12,6 +12,8 @@
 #include <spdlog/spdlog.h>
 
 #include "cli_docs.h"
+#include "cli_errors.h"
+
 #include "commands.h"
 #include "clidoc/doc_request.h"
 #include "core/command_suggestion.h"
@@ -25,7 +27,9 @@ int main(int argc, char** argv) {
   spdlog::set_default_logger(spdlog::stderr_color_mt("gridfree"));
   spdlog::set_pattern("%^[%l]%$ %v");
 
-  CLI::App app{"gridfree: how much of a CFD-DEM answer is grid error"};
+  // Named: usage lines say "gridfree", not the path it was run from.
+  CLI::App app{"gridfree: how much of a CFD-DEM answer is grid error", "gridfree"};
+  app.failure_message(cli::failure_message);  // "error: …" like every other failure
   const std::string version = program_version_string("gridfree");
   app.set_version_flag("--version,-V", version);
   app.require_subcommand(1);
@@ -64,7 +68,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : to_int(ExitCode::kInvalidInput);
   } catch (const InputError& e) {
-    std::cerr << "error: invalid input\n" << e.what() << '\n';
+    cli::print_input_error(std::cerr, e);
     return to_int(ExitCode::kInvalidInput);
   } catch (const SqliteError& e) {
     // A database another process kept busy beyond the wait is not a bug

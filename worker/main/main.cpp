@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   spdlog::set_default_logger(spdlog::stderr_color_mt("gridfree-worker"));
   spdlog::set_pattern("%^[%l]%$ %v");
 
-  CLI::App app{"gridfree-worker: steady gas flow through one frozen particle bed on one grid"};
+  CLI::App app{"gridfree-worker: steady gas flow through one frozen particle bed on one grid", "gridfree-worker"};
   const std::string version = program_version_string("gridfree-worker");
   app.set_version_flag("--version,-V", version);
   app.require_subcommand(1);
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : to_int(ExitCode::kInvalidInput);
   } catch (const InputError& e) {
-    std::cerr << "error: invalid input\n" << e.what() << '\n';
+    std::cerr << error_lines(e);
     return to_int(ExitCode::kInvalidInput);
   } catch (const std::exception& e) {
     std::cerr << "error: internal: " << e.what() << '\n';

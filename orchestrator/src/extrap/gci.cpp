@@ -29,6 +29,13 @@ std::optional<double> apparent_order(double r21, double r32, double e21, double 
 
 }  // namespace
 
+std::optional<std::string> convergence_type(double r21, double r32, double e21, double e32) {
+  if (e21 == 0 || e32 == 0) return std::nullopt;
+  const double x = e32 / e21;
+  if (x < 0) return std::string("oscillatory");
+  return std::string(x > std::log(r32) / std::log(r21) ? "monotone" : "divergent");
+}
+
 GciTriplet gci_triplet(const std::array<double, 3>& h, const std::array<double, 3>& f) {
   GciTriplet t;
   t.h = h;
@@ -36,13 +43,8 @@ GciTriplet gci_triplet(const std::array<double, 3>& h, const std::array<double, 
   t.r21 = h[1] / h[0];
   t.r32 = h[2] / h[1];
   const double e21 = f[1] - f[0], e32 = f[2] - f[1];
-  if (e32 != 0) {
-    const double R = e21 / e32;
-    t.ratio = R;
-    if (R < 0) t.convergence = "oscillatory";
-    else if (R > 0 && R < 1) t.convergence = "monotone";
-    else if (R >= 1) t.convergence = "divergent";
-  }
+  if (e32 != 0) t.ratio = e21 / e32;
+  t.convergence = convergence_type(t.r21, t.r32, e21, e32);
   if (e21 == 0 || e32 == 0) {
     t.status = "zero_difference";
     return t;

@@ -10,8 +10,19 @@
 //     e_a21 = |(φ1 − φ2)/φ1|,  e_ext21 = |(φ_ext21 − φ1)/φ_ext21|             [C08 eqs. 7a, 7b]
 //     GCI_fine21 = 1.25 e_a21/(r21^p − 1)    (relative, as C08 eq. 7c defines it)
 //
-// Convergence from R = ε21/ε32: monotone 0 < R < 1, oscillatory R < 0,
-// divergent R ≥ 1. Status "ok", or why the numbers are missing:
+// Convergence type, judged against r^p with the two ratios as they are
+// (r21 ≠ r32 after a failed grid is dropped): one term k h^p with p > 0 gives
+//
+//     ε32/ε21 = g(p) = r21^p (r32^p − 1)/(r21^p − 1),
+//
+// and g increases with p from g(0+) = ln r32/ln r21 (d ln g/dp =
+// ln r32/(1 − r32^−p) − ln r21/(r21^p − 1), and the first term exceeds 1/p,
+// the second is below it). So the signed form of
+// C08 eq. 5 (s = +1) has a root p > 0 exactly when ε32/ε21 > ln r32/ln r21:
+// "monotone"; ε32/ε21 < 0 (C08: s = −1): "oscillatory"; else "divergent"
+// (no positive order fits; with r21 = r32 this is R = ε21/ε32 ≥ 1, the
+// equal-ratio rule). R is kept for the table. Status "ok", or why the
+// numbers are missing:
 // "zero_difference" (ε21 = 0 or ε32 = 0), "no_convergence_of_order_iteration"
 // (the fixed-point iteration failed to settle in kMaxIterations or left the
 // domain of q), "zero_order" (p = 0: r^p − 1 = 0), "order_overflow" (r21^p
@@ -40,6 +51,9 @@ struct GciTriplet {
 };
 
 inline constexpr int kGciMaxIterations = 10000;
+
+// monotone | oscillatory | divergent as above; nothing when ε21 or ε32 is 0.
+std::optional<std::string> convergence_type(double r21, double r32, double e21, double e32);
 
 // One triplet; h strictly increasing.
 GciTriplet gci_triplet(const std::array<double, 3>& h, const std::array<double, 3>& f);

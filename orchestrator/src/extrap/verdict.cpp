@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "extrap/value_format.h"
+
 namespace gridfree {
 namespace {
 
@@ -25,13 +27,17 @@ bool finite(const std::optional<double>& v) { return v && std::isfinite(*v); }
 
 // Where f0 lies relative to the data: inside [min f, max f], or how far beyond
 // the smallest/largest value (then within the envelope of k R_f, since the
-// sentence is only used when the envelope rule passed).
-std::string envelope_sentence(double f0, double lo, double hi, double range, double k) {
-  if (f0 >= lo && f0 <= hi) return "f0 lies within the data range [" + g4(lo) + ", " + g4(hi) + "]";
+// sentence is only used when the envelope rule passed). Values and the
+// distance are quoted to the decimal `u` supports, the distance taken between
+// the rounded values, so the sentence agrees with the printed f0 ± U.
+std::string envelope_sentence(double f0, double lo, double hi, double range, double k,
+                              const std::optional<double>& u) {
+  const auto q = [&](double v) { return format_value_for_u(v, u, 4); };
+  if (f0 >= lo && f0 <= hi) return "f0 lies within the data range [" + q(lo) + ", " + q(hi) + "]";
   const bool above = f0 > hi;
-  const double d = above ? f0 - hi : lo - f0;
-  std::string s = "f0 lies " + g4(d) + (above ? " above the largest" : " below the smallest") + " value " +
-                  g4(above ? hi : lo);
+  const double d = above ? rounded_for_u(f0, u) - rounded_for_u(hi, u) : rounded_for_u(lo, u) - rounded_for_u(f0, u);
+  std::string s = "f0 lies " + q(d) + (above ? " above the largest" : " below the smallest") + " value " +
+                  q(above ? hi : lo);
   if (range > 0) s += " (" + g4(d / range) + " R_f), within the envelope of " + g4(k) + " R_f";
   return s;
 }
@@ -177,7 +183,8 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
     v.value = "converged";
     v.reasons.push_back("p = " + g4(*r.p) + " in [" + g4(opts.p_low) + ", " + g4(opts.p_high) +
                         "], σ_RE/R_f = " + g4(*r.sigma_over_range) + " < 1, " +
-                        envelope_sentence(*r.f0, *lo_it, *hi_it, r.data_range.value_or(0.0), rules.envelope_k) +
+                        envelope_sentence(*r.f0, *lo_it, *hi_it, r.data_range.value_or(0.0), rules.envelope_k,
+                                          f0_digits_u(r.u0, r.grids.empty() ? std::nullopt : r.grids.front().u)) +
                         ", " +
                         std::to_string(c.dof) + " degrees of freedom, finest-grid RDE " +
                         percent(*c.rde_finest) + " ≤ " + percent(rules.rde_converged));

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -46,7 +47,7 @@ std::string finest_label(const SeriesSummary& s) {
   if (!s.extrapolation || s.extrapolation->grids.empty()) return {};
   const ExtrapolatedGrid& g = s.extrapolation->grids.front();
   return "f_{1} = " + format_with_uncertainty(g.f, g.u, 6) + (g.u ? "" : " (no U)") + " (finest Δ* = " +
-         format_g(g.h, 3) + ")";
+         format_cell_size(g.h) + ")";
 }
 
 }  // namespace gridfree

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "report/chart_common.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -79,7 +80,7 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
     for (std::size_t k : front) {
       on.x.push_back(points[k].rde);
       on.y.push_back(points[k].cost);
-      on.point_labels.push_back("Δ* " + format_g(h[k], 3));
+      on.point_labels.push_back("Δ* " + format_cell_size(h[k]));
     }
     for (std::size_t k = 0; k < points.size(); ++k) {
       if (std::find(front.begin(), front.end(), k) != front.end()) continue;

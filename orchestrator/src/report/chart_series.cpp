@@ -8,6 +8,7 @@
 #include "extrap/verdict.h"
 
 #include "report/chart_common.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -91,7 +92,7 @@ Chart series_chart(const SeriesSummary& s, std::size_t index) {
     }
   }
   if (any_u) points.name += " ± U";
-  for (double h : s.h) points.point_labels.push_back(format_g(h, 3));  // Δ* of each point
+  for (double h : s.h) points.point_labels.push_back(format_cell_size(h));  // Δ* of each point
   chart.series.push_back(points);
   if (e && !s.h.empty()) {
     // Down to h = 0 on a linear axis; on a log axis (grids spanning more

@@ -3,6 +3,7 @@
 #include "report/ensemble_budget.h"
 
 #include "report/differences.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -104,10 +105,10 @@ std::vector<std::string> budget_sentences(const std::vector<EnsembleConfig>& con
       while (j + 1 < mine.size() && mine[j + 1]->dominant == mine[i]->dominant) ++j;
       if (!first) text += "; ";
       first = false;
-      const std::string range = i == j ? "at Δ* " + format_g(mine[i]->delta_star, 3)
-                                       : "for Δ* " + format_g(mine[i]->delta_star, 3) + "–" +
-                                             format_g(mine[j]->delta_star, 3);
-      text += mine[i]->dominant + " dominates " + range + " (at Δ* " + format_g(mine[i]->delta_star, 3) + ": " +
+      const std::string range = i == j ? "at Δ* " + format_cell_size(mine[i]->delta_star)
+                                       : "for Δ* " + format_cell_size(mine[i]->delta_star) + "–" +
+                                             format_cell_size(mine[j]->delta_star);
+      text += mine[i]->dominant + " dominates " + range + " (at Δ* " + format_cell_size(mine[i]->delta_star) + ": " +
               numbers(*mine[i]) + ")";
       i = j + 1;
     }

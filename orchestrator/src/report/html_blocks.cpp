@@ -38,7 +38,11 @@ std::string table_section(const NamedTable& t, const std::string& id, const std:
 
 std::string figure(const NamedChart& c, const std::string& file_href, const std::string& svg) {
   const std::string href = file_href.empty() ? c.file : file_href;
-  return "<figure id=\"" + xml_escape(slugify(c.file)) + "\">\n" + (svg.empty() ? render_svg(c.chart) : svg) +
+  // Both renderings: the wide one for screens and print, the narrow one for
+  // phones (report_css: which one shows follows the page width).
+  return "<figure id=\"" + xml_escape(slugify(c.file)) + "\">\n<div class=\"chart-wide\">" +
+         (svg.empty() ? render_svg(c.chart) : svg) + "</div><div class=\"chart-narrow\">" +
+         render_svg(narrow_chart(c.chart)) + "</div>" +
          "<figcaption>" +
          xml_escape(c.caption) + " File: <a href=\"" + xml_escape(href) + "\">" + xml_escape(c.file) +
          "</a></figcaption>\n</figure>\n";
@@ -47,7 +51,8 @@ std::string figure(const NamedChart& c, const std::string& file_href, const std:
 std::string verdict_block(const VerdictItem& v, const std::string& href) {
   const std::string label = href.empty() ? xml_escape(v.label)
                                          : "<a href=\"" + xml_escape(href) + "\">" + xml_escape(v.label) + "</a>";
-  std::string out = "<div class=\"verdict verdict-" + xml_escape(v.verdict) + "\"><p><strong>" + label +
+  std::string out = "<div class=\"verdict verdict-" + xml_escape(v.verdict) + "\" id=\"v-" +
+                    xml_escape(slugify(v.label)) + "\"><p><strong>" + label +
                     "</strong>: <span class=\"word\">" + xml_escape(v.verdict) + "</span> — " +
                     xml_escape(v.headline) + "</p>\n<ul>\n";
   for (const auto& r : v.reasons) out += "<li>" + xml_escape(r) + "</li>\n";

@@ -24,6 +24,20 @@ table.data th { background: #f2f2f2; } table.data td.num { text-align: right; fo
 table.data tr:nth-child(even) td { background: #fafafa; }
 .charts { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(620px, 100%), 1fr)); gap: 0 1.5em; }
 figure { margin: 1em 0; } figure svg { max-width: 100%; height: auto; }
+.chart-narrow { display: none; }
+section.answer .counts { font-size: 1.15em; margin: 0.4em 0; }
+table.answer-table { font-size: 0.95em; }
+.attention ul { margin: 0.3em 0; padding-left: 1.2em; } .attention li { margin: 0.15em 0; }
+@media (max-width: 700px) {
+  body { margin: 0.5em auto; padding: 0 0.5em; }
+  .chart-wide { display: none; } .chart-narrow { display: block; }
+  .chart-narrow svg { width: 100%; max-width: 420px; }
+  figure.stability-figure svg { max-width: none; }  /* 1:1 (11 px text), scrolling sideways in its box */
+  table.data { font-size: 0.8em; }
+  table.data td:first-child { white-space: normal; min-width: 7em; }  /* the name wraps, f0 ± U stays in view */
+  h1 { font-size: 1.3em; }
+  dl.summary { display: block; font-size: 0.9em; } dl.summary dd { margin: 0 0 0.3em 1em; }
+}
 figcaption { font-size: 0.9em; color: #444; max-width: 720px; }
 p.note { font-size: 0.9em; color: #444; max-width: 900px; }
 div.verdict { border-left: 4px solid #999; padding: 0 1em; margin: 0.5em 0; }
@@ -43,7 +57,12 @@ div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em;
   table.data td.num { white-space: nowrap; } table.data.fit-landscape-small td.num { white-space: normal; }
   table.data td.prose { min-width: 10em; }
   .charts { display: block; }
+  .chart-narrow { display: none; } .chart-wide { display: block; }
   figure { break-inside: avoid; } h2, h3 { break-after: avoid; }
+  /* No orphan rows: a table's last three rows and the note under it stay together. */
+  table.data tr { break-inside: avoid; }
+  table.data tbody tr:nth-last-child(-n+2) { break-before: avoid; }
+  .scroll + p.note { break-before: avoid; }
   nav.toc { columns: 1; }
   .filter { display: none; }
 }

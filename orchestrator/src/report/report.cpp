@@ -127,7 +127,12 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
     files.csv.push_back(out_dir / t->file);
     const bool in_parts = content.layout == ReportLayout::summary && (t == &content.grids_table || t == &content.gci_table);
     write_file_atomically(files.csv.back(),
-                          in_parts ? csv_by_series(content.series, t == &content.grids_table ? grids_table : gci_table)
+                          in_parts ? (t == &content.grids_table
+                                          ? csv_by_series(content.series, grids_table)
+                                          : csv_by_series(content.series,
+                                                          [&](const std::vector<SeriesSummary>& one) {
+                                                            return gci_table(one, data.p_low, data.p_high);
+                                                          }))
                                    : to_csv(t->table));
   }
   if (!content.alignment.empty()) {  // only for a study that ran the alignment check

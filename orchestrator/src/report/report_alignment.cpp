@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -73,7 +74,7 @@ std::vector<std::string> alignment_warnings(const std::vector<AlignmentLine>& li
   std::vector<std::string> out;
   for (const auto& l : lines)
     if (l.exceeds())
-      out.push_back(l.series_label + ": at Δ* = " + format_g(l.grid.delta_star, 4) + " the alignment spread " +
+      out.push_back(l.series_label + ": at Δ* = " + format_cell_size(l.grid.delta_star) + " the alignment spread " +
                     format_percent(l.spread) + " exceeds U/|f| = " + format_percent(l.u_relative) +
                     "; this grid's U understates its grid error (see Alignment check).");
   return out;

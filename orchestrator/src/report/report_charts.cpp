@@ -2,8 +2,11 @@
 // The list of report charts (see report_charts.h).
 #include "report/report_charts.h"
 
+#include <algorithm>
+
 #include "report/chart_common.h"
 #include "report/chart_rde_bands.h"
+#include "report/series_concerns.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -44,8 +47,31 @@ std::vector<std::size_t> sample_indices(std::size_t n, std::size_t max) {
   return out;
 }
 
+std::vector<std::size_t> speed_accuracy_selection(const std::vector<SeriesSummary>& series, double p_low,
+                                                  double p_high, std::size_t worst, std::size_t cheapest) {
+  std::vector<std::size_t> bad, out;
+  for (const auto& c : series_concerns(series, p_low, p_high))
+    if (bad.size() < worst && series[c.series].f0()) bad.push_back(c.series);
+  std::vector<std::pair<double, std::size_t>> cost;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    if (series[i].verdict != "converged" || std::find(bad.begin(), bad.end(), i) != bad.end()) continue;
+    double cpu = 0;
+    for (const GridPoint& g : series[i].series.grids)
+      if (is_converged(g)) cpu += g.cpu_s;
+    cost.emplace_back(cpu, i);
+  }
+  std::stable_sort(cost.begin(), cost.end());
+  std::sort(bad.begin(), bad.end());
+  out = bad;
+  std::vector<std::size_t> cheap;
+  for (std::size_t k = 0; k < cost.size() && k < cheapest; ++k) cheap.push_back(cost[k].second);
+  std::sort(cheap.begin(), cheap.end());
+  out.insert(out.end(), cheap.begin(), cheap.end());
+  return out;
+}
+
 std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde,
-                                     ReportLayout layout) {
+                                     ReportLayout layout, double p_low, double p_high) {
   std::vector<NamedChart> out;
   if (layout == ReportLayout::full_page) {
     out.push_back({"fig2_rde.svg",
@@ -61,14 +87,24 @@ std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, s
     out.push_back({"fig2_rde_" + name + ".svg",
                    "RDE of every grid (docs/PHYSICS.md §8), aggregated " +
                        (factor.empty() ? std::string("over all series") : "by " + factor) +
-                       ": the median and the 10–90 % band at each Δ*; each series' own RDE chart is on its page.",
+                       ": the median and the 10–90 % band at each Δ*; each series' grids with their RDE are in the grids "
+                       "table of its page.",
                    rde_band_chart(series, factor, target_rde), {}});
   }
+  // The series that most need a look and the cheapest converged ones, one
+  // colour each (kSpeedAccuracyWorst + kSpeedAccuracyCheapest ≤ 7 palette
+  // colours; the 8th is the legend's "dominated grid").
+  const auto picked =
+      speed_accuracy_selection(series, p_low, p_high, kSpeedAccuracyWorst, kSpeedAccuracyCheapest);
   std::vector<SeriesSummary> sample;
-  for (std::size_t i : sample_indices(series.size(), kChartSeries)) sample.push_back(series[i]);
+  for (std::size_t i : picked) sample.push_back(series[i]);
+  const std::size_t n_worst =
+      speed_accuracy_selection(series, p_low, p_high, kSpeedAccuracyWorst, 0).size();
   add_speed_accuracy(out, sample,
-                     std::to_string(sample.size()) + " of " + std::to_string(series.size()) +
-                         " series drawn, evenly spaced in study order; every grid's cost and RDE in grids.csv");
+                     std::to_string(sample.size()) + " of " + std::to_string(series.size()) + " series drawn: " +
+                         std::to_string(n_worst) + " that most need a look (Attention) and " +
+                         std::to_string(sample.size() - n_worst) +
+                         " cheapest converged (least CPU over their grids); every grid's cost and RDE in grids.csv");
   return out;
 }
 
@@ -90,7 +126,8 @@ std::vector<NamedChart> series_charts(const std::vector<SeriesSummary>& series, 
 }
 
 std::vector<NamedChart> report_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde) {
-  auto out = study_charts(series, target_rde, ReportLayout::full_page);
+  auto out = study_charts(series, target_rde, ReportLayout::full_page, StudyReportData{}.p_low,
+                          StudyReportData{}.p_high);
   for (std::size_t i = 0; i < series.size(); ++i)
     for (auto& c : series_charts(series, i)) out.push_back(std::move(c));
   return out;

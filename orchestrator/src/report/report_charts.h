@@ -32,10 +32,18 @@ struct NamedChart {
 // The study-wide charts. Full page: fig2_rde.svg with a line per series and
 // the speed-accuracy charts of every series. Summary layout: one RDE band
 // chart per factor of 2 to 8 levels (one over all series when there is
-// none), and speed-accuracy charts of at most kChartSeries series sampled
-// evenly in study order, the chart's note saying how many of how many.
+// none), and speed-accuracy charts of the series speed_accuracy_selection
+// picks, the chart's note saying which and of how many. p_low, p_high: the
+// study's accepted order range (the Attention ranking).
 std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, std::optional<double> target_rde,
-                                     ReportLayout layout);
+                                     ReportLayout layout, double p_low, double p_high);
+
+// The series a summary's speed-accuracy charts draw, one palette colour
+// each: the `worst` first in the Attention ranking (series_concerns.h) that
+// have an f0, then the `cheapest` converged series not already chosen — the
+// least CPU time over their converged grids. Study order within each group.
+std::vector<std::size_t> speed_accuracy_selection(const std::vector<SeriesSummary>& series, double p_low,
+                                                  double p_high, std::size_t worst, std::size_t cheapest);
 
 // Series i's Fig. 1 chart and (when it has GCI triplets) its GCI chart.
 std::vector<NamedChart> series_charts(const std::vector<SeriesSummary>& series, std::size_t i);

@@ -32,7 +32,7 @@ int ReportContent::grids_failed() const { return count_grids(*this, is_failed); 
 int ReportContent::grids_pending() const { return count_grids(*this, is_pending); }
 
 NamedTable head_of_series_tables(const std::vector<SeriesSummary>& series, std::string file, std::string title,
-                                 Table (*of_series)(const std::vector<SeriesSummary>&)) {
+                                 const std::function<Table(const std::vector<SeriesSummary>&)>& of_series) {
   NamedTable out{std::move(file), std::move(title), of_series({}), 0};
   for (const auto& s : series) {
     Table one = of_series({s});
@@ -78,7 +78,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.layout = layout_for(data.series.size());
   c.series = summarize_series(data, extrapolate);
   c.differences = one_factor_differences(c.series);
-  c.series_table = {"series.csv", "Series and extrapolation", series_table(c.series)};
+  c.series_table = {"series.csv", "Series and extrapolation", series_table(c.series, data.p_low, data.p_high)};
   // Summary layout: the largest differences first, the page shows the first rows.
   std::vector<SeriesDifference> shown = c.differences;
   if (c.layout == ReportLayout::summary)
@@ -90,10 +90,12 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.cost_table = {"cost.csv", "What a target costs (speed vs accuracy)", cost_table(c.series)};
   if (c.layout == ReportLayout::summary) {
     c.gci_table = head_of_series_tables(c.series, "gci.csv", "Classic three-grid Richardson extrapolation / GCI",
-                                        gci_table);
+                                        [&](const std::vector<SeriesSummary>& one) {
+                                          return gci_table(one, data.p_low, data.p_high);
+                                        });
     c.grids_table = head_of_series_tables(c.series, "grids.csv", "Every grid", grids_table);
   } else {
-    c.gci_table = {"gci.csv", "Classic three-grid Richardson extrapolation / GCI", gci_table(c.series)};
+    c.gci_table = {"gci.csv", "Classic three-grid Richardson extrapolation / GCI", gci_table(c.series, data.p_low, data.p_high)};
     c.grids_table = {"grids.csv", "Every grid", grids_table(c.series)};
   }
   c.failures_table = {"failures.csv", "Failures", failures_table(c.series)};
@@ -106,7 +108,7 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
   c.alignment_table = {"alignment.csv", "Alignment check", alignment_table(c.alignment)};
   c.verdict_count_table = {"verdict_counts.csv", "Verdicts per factor level", verdict_count_table(c.series)};
   if (c.layout == ReportLayout::summary) {
-    c.charts = study_charts(c.series, data.target_rde, c.layout);
+    c.charts = study_charts(c.series, data.target_rde, c.layout, data.p_low, data.p_high);
     for (std::size_t i = 0; i < c.series.size(); ++i) c.series_table.table.rows[i][0].href = series_page_file(c, i);
   } else {
     c.charts = report_charts(c.series, data.target_rde);

@@ -4,6 +4,7 @@
 // extrapolations, one-factor differences, tables and charts.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -64,7 +65,7 @@ std::string render_html(const ReportContent& content);  // self-contained: CSS a
 // whole table and its row count, without holding every row (48 600 grids
 // take 85 MB as a Table); `of_series` makes the table of one series.
 NamedTable head_of_series_tables(const std::vector<SeriesSummary>& series, std::string file, std::string title,
-                                 Table (*of_series)(const std::vector<SeriesSummary>&));
+                                 const std::function<Table(const std::vector<SeriesSummary>&)>& of_series);
 
 // Summary layout: series i's page, series/<slug>.html (report/series_page.cpp).
 std::string series_page_file(const ReportContent& content, std::size_t i);

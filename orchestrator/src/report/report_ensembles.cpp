@@ -154,8 +154,10 @@ std::string ensembles_html(const ReportContent& c) {
   for (const auto& s : e.sentences) out += "<li>" + xml_escape(s) + "</li>\n";
   out += "</ul>\n<div class=\"charts\">\n";
   for (const auto& chart : e.charts)
-    out += "<figure id=\"" + xml_escape(slugify(chart.file)) + "\">\n" + render_svg(chart.chart) + "<figcaption>" +
-           xml_escape(chart.caption) + " File: " + xml_escape(chart.file) + "</figcaption>\n</figure>\n";
+    out += "<figure id=\"" + xml_escape(slugify(chart.file)) + "\">\n<div class=\"chart-wide\">" +
+           render_svg(chart.chart) + "</div><div class=\"chart-narrow\">" + render_svg(narrow_chart(chart.chart)) +
+           "</div><figcaption>" + xml_escape(chart.caption) + " File: " + xml_escape(chart.file) +
+           "</figcaption>\n</figure>\n";
   out += "</div>\n<div class=\"scroll\">\n" + to_html(e.budget_table) + "</div>\n";
   out += "<p class=\"note\">CSV: budget.csv (beside this file)</p>\n";
   return out;

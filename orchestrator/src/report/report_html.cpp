@@ -10,11 +10,14 @@
 #include <vector>
 
 #include "report/adaptive_section.h"
+#include "report/first_screen.h"
+#include "report/series_filter.h"
 #include "report/html_blocks.h"
 #include "report/html_toc.h"
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/series_coverage.h"
 #include "report/stability_section.h"
 #include "report/text_format.h"
 #include "report/verdict_counts.h"
@@ -31,42 +34,32 @@ std::string verdict_section(const ReportContent& c) {
   return out;
 }
 
-// Summary layout (report_layout.h): the counts per factor level and the
-// worst series, each linked to its page.
+// Summary layout (report_layout.h): the counts per factor level; the ranked
+// series are the first screen's attention list.
 std::string verdict_summary(const ReportContent& c) {
   std::string out = "<h2 id=\"verdicts\">Verdicts</h2>\n<p class=\"note\">" +
                     xml_escape(reading_note("verdicts")) + "</p>\n";
   out += "<div class=\"scroll\">\n" + to_html(c.verdict_count_table.table) + "</div>\n";
   out += "<p class=\"note\">CSV: <a href=\"" + xml_escape(c.verdict_count_table.file) + "\">" +
          xml_escape(c.verdict_count_table.file) + "</a></p>\n";
-  const auto worst = worst_series(c.series, kWorstSeries);
-  out += "<h3 id=\"worst-series\">Worst series</h3>\n<p class=\"note\">The " + std::to_string(worst.size()) +
-         " of " + std::to_string(c.series.size()) +
-         " series furthest from a converged answer: not converged first, then by the finest grid's RDE. Every "
-         "series' verdict is in the series table below and on its own page.</p>\n";
-  for (std::size_t i : worst) out += verdict_block(verdict_item(c.series[i]), series_page_file(c, i));
+  // Which series need a look, ranked, is the attention list at the top
+  // (first_screen.h): no second list of verdict blocks here.
+  out += "<p class=\"note\">The series that need a look, worst first, are <a href=\"#attention\">under "
+         "Attention</a> at the top; every series' verdict is in <a href=\"#series\">the series table</a> and on its "
+         "own page.</p>\n";
   return out;
 }
 
 // The series table of the summary layout: every row, each series linked to
-// its page, with a filter by any words of its row (factor levels, verdict).
+// its page, with a filter of exact tokens (series_filter.h): whole words of
+// the row, `field:value`, `field>number`.
 std::string filtered_series_table(const ReportContent& c) {
   std::string out = table_section(c.series_table, "series", "No series.");
   const std::string filter =
       "<p class=\"filter\"><label>Filter series: <input type=\"search\" id=\"series-filter\" "
-      "placeholder=\"words of the row, e.g. hkl 12 pre-asymptotic\"></label> <span id=\"series-shown\"></span></p>\n"
-      "<script>\n(function () {\n"
-      "  var input = document.getElementById('series-filter'), shown = document.getElementById('series-shown');\n"
-      "  var rows = document.querySelectorAll('#series-rows tbody tr');\n"
-      "  input.addEventListener('input', function () {\n"
-      "    var words = input.value.toLowerCase().split(/\\s+/).filter(Boolean), n = 0;\n"
-      "    rows.forEach(function (row) {\n"
-      "      var text = row.textContent.toLowerCase();\n"
-      "      var show = words.every(function (w) { return text.indexOf(w) !== -1; });\n"
-      "      row.style.display = show ? '' : 'none'; n += show ? 1 : 0;\n"
-      "    });\n"
-      "    shown.textContent = words.length ? n + ' of ' + rows.length + ' series' : '';\n"
-      "  });\n})();\n</script>\n";
+      "placeholder=\"e.g. verdict:pre-asymptotic failed>0 hkl\"></label> <span id=\"series-shown\"></span></p>\n"
+      "<p class=\"note filter-help\">" + xml_escape(series_filter_help(c.series_table.table)) + "</p>\n" +
+      series_filter_script(c.series_table.table);
   // The filter above the table, the script after it (the rows exist when it runs).
   const std::string scroll = "<div class=\"scroll\">";
   const auto table_at = out.find(scroll);
@@ -114,21 +107,6 @@ std::string contents(const ReportContent& c, const std::string& body) {
 
 bool per_series(const NamedChart& c) { return c.file.rfind("fig1_", 0) == 0 || c.file.rfind("gci_", 0) == 0; }
 
-// The attention list, at most kShownWarnings lines in the summary layout.
-std::string attention(const ReportContent& c) {
-  const auto warnings = series_warnings(c);
-  if (warnings.empty()) return {};
-  const std::size_t shown = c.layout == ReportLayout::summary ? std::min(warnings.size(), kShownWarnings)
-                                                              : warnings.size();
-  std::string out = "<div class=\"attention\"><strong>Attention:</strong><ul>\n";
-  for (std::size_t i = 0; i < shown; ++i) out += "<li>" + xml_escape(warnings[i]) + "</li>\n";
-  if (shown < warnings.size())
-    out += "<li>… and " + std::to_string(warnings.size() - shown) +
-           " more: the series table's verdicts and notes (series.csv) and each series' page have them all.</li>\n";
-  out += "</ul></div>\n";
-  return out;
-}
-
 std::string full_page_body(const ReportContent& c) {
   std::string body = verdict_section(c);
   body += adaptive_section_html(c.data.adaptive_decisions);
@@ -138,7 +116,7 @@ std::string full_page_body(const ReportContent& c) {
   body += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.");
   body += table_section(c.cost_table, "cost", "No series has an extrapolation yet.");
   body += table_section(c.coverage_table, "coverage",
-                        "No series checked yet: a series needs all its grids and at least 6 of them converged.");
+                        "No series checked: " + coverage_not_made(c.series) + ".");
   body += "<h2 id=\"charts\">Charts</h2>\n<div class=\"charts\">\n";
   for (const auto& chart : c.charts) {
     if (!per_series(chart)) body += figure(chart);
@@ -167,7 +145,7 @@ std::string summary_body(const ReportContent& c) {
   body += table_section(c.differences_table, "differences", "No two series differ in exactly one factor.", kShownRows);
   body += table_section(c.cost_table, "cost", "No series has an extrapolation yet.", kShownRows);
   body += table_section(c.coverage_table, "coverage",
-                        "No series checked yet: a series needs all its grids and at least 6 of them converged.",
+                        "No series checked: " + coverage_not_made(c.series) + ".",
                         kShownRows);
   body += "<h2 id=\"charts\">Charts</h2>\n<p class=\"note\">With " + std::to_string(c.series.size()) +
           " series the study charts aggregate (RDE: median and 10–90 % band per factor level) or sample "
@@ -188,12 +166,12 @@ std::string summary_body(const ReportContent& c) {
 std::string render_html(const ReportContent& c) {
   const std::string title = "Grid-convergence report: " + c.data.study_name;
   std::string out = html_page_head(title);
-  out += "<h1>" + xml_escape(title) + "</h1>\n<dl class=\"summary\">\n";
+  // The answer first (first_screen.h), then the study's particulars.
+  out += "<h1>" + xml_escape(title) + "</h1>\n" + first_screen_html(c) + "<dl class=\"summary\">\n";
   for (const auto& [key, value] : summary_items(c)) {
     out += "<dt>" + xml_escape(key) + "</dt><dd>" + xml_escape(value) + "</dd>\n";
   }
   out += "</dl>\n";
-  out += attention(c);
   const std::string body = c.layout == ReportLayout::summary ? summary_body(c) : full_page_body(c);
   out += contents(c, body) + body;
   out += "</body>\n</html>\n";

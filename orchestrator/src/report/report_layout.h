@@ -19,7 +19,8 @@ inline constexpr std::size_t kFullPageSeries = 24;   // the largest study shown 
 inline constexpr std::size_t kShownRows = 50;        // rows of a long table on the summary page
 inline constexpr std::size_t kWorstSeries = 20;      // series listed under "Worst series"
 inline constexpr std::size_t kShownWarnings = 20;    // attention lines before "… and N more"
-inline constexpr std::size_t kChartSeries = 24;      // series drawn on a sampled chart
+inline constexpr std::size_t kSpeedAccuracyWorst = 4;    // speed-accuracy: series that most need a look
+inline constexpr std::size_t kSpeedAccuracyCheapest = 3; // … and the cheapest converged ones
 
 enum class ReportLayout { full_page, summary };
 

@@ -8,8 +8,10 @@
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/series_coverage.h"
 #include "report/stability_section.h"
 #include "report/text_format.h"
+#include "report/first_screen.h"
 #include "report/verdict_counts.h"
 
 namespace gridfree {
@@ -48,17 +50,9 @@ std::string render_markdown(const ReportContent& c) {
   const bool summary = c.layout == ReportLayout::summary;
   const std::size_t cap = summary ? kShownRows : std::numeric_limits<std::size_t>::max();
   std::string out = "# Grid-convergence report: " + c.data.study_name + "\n\n";
+  out += first_screen_markdown(c);  // the answer first (first_screen.h)
   for (const auto& [key, value] : summary_items(c)) out += "- **" + key + ":** " + value + "\n";
   out += "\n";
-  const auto warnings = series_warnings(c);
-  if (!warnings.empty()) {
-    out += "**Attention:**\n\n";
-    const std::size_t shown = summary ? std::min(warnings.size(), kShownWarnings) : warnings.size();
-    for (std::size_t i = 0; i < shown; ++i) out += "- " + warnings[i] + "\n";
-    if (shown < warnings.size())
-      out += "- … and " + std::to_string(warnings.size() - shown) + " more (series.csv and each series' page)\n";
-    out += "\n";
-  }
   out += "## Verdicts\n\n" + reading_note("verdicts") + "\n\n";
   if (summary) {
     out += to_markdown(c.verdict_count_table.table) + "\nCSV: [" + c.verdict_count_table.file + "](" +
@@ -79,7 +73,7 @@ std::string render_markdown(const ReportContent& c) {
   out += table_section(c.differences_table, "No two series differ in exactly one factor.", cap);
   out += table_section(c.cost_table, "No series has an extrapolation yet.", cap);
   out += table_section(c.coverage_table,
-                       "No series checked yet: a series needs all its grids and at least 6 of them converged.", cap);
+                       "No series checked: " + coverage_not_made(c.series) + ".", cap);
   out += "## Charts\n\n";
   if (!c.export_note.empty()) out += c.export_note + "\n\n";
   for (const auto& chart : c.charts) {

@@ -5,6 +5,7 @@
 #include "extrap/verdict.h"
 #include "report/extrapolator.h"
 #include "report/series_coverage.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -22,8 +23,9 @@ std::vector<std::pair<std::string, std::string>> summary_items(const ReportConte
       {"Measured coverage", measured_coverage_line(d.extrapolation_method, d.expected_order.has_value())},
       {"Series", std::to_string(c.series.size())},
       {"Coverage self-check", coverage_summary(c.series)},
-      {"Grids", std::to_string(c.grids_total()) + " (" + std::to_string(c.grids_converged()) + " converged, " +
-                    std::to_string(c.grids_failed()) + " failed or not converged, " +
+      // Grids are "solved" (their solver converged); "converged" is a series' verdict.
+      {"Grids", std::to_string(c.grids_total()) + " (" + std::to_string(c.grids_converged()) + " solved, " +
+                    std::to_string(c.grids_failed()) + " failed (no value), " +
                     std::to_string(c.grids_pending()) + " pending)"},
       {"Written by", d.version},
   };
@@ -53,7 +55,7 @@ VerdictItem verdict_item(const SeriesSummary& s) {
     item.headline = "f0 = " + (u0 ? format_with_uncertainty(*f0, u0) + " (U₀)" : format_to_uncertainty_digits(*f0, u));
     if (!grids.empty())
       item.headline += std::string("; finest grid ") + (s.series.quantity.empty() ? "Δ*" : "h") + " = " +
-                       format_g(grids.front().h, 4) + ": f₁ = " +
+                       format_cell_size(grids.front().h) + ": f₁ = " +
                        format_with_uncertainty(grids.front().f, u) +
                        (u ? " (U₁, RDE " + format_percent(grids.front().rde) + ")" : "");
   } else {

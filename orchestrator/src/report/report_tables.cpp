@@ -6,7 +6,10 @@
 #include <optional>
 
 #include "extrap/verdict.h"
+#include "extrap/value_format.h"
+#include "report/series_concerns.h"
 #include "report/series_coverage.h"
+#include "report/stability_map.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -107,10 +110,15 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
   return t;
 }
 
-Table series_table(const std::vector<SeriesSummary>& series) {
+Table series_table(const std::vector<SeriesSummary>& series, double p_low, double p_high) {
   Table t;
+  // The series' name and f0 ± U₀ first: a narrow screen shows them without
+  // scrolling sideways (the f0 cell prints U₀ with it; U0 stays in the CSV).
   t.columns.push_back(text_col("series"));
+  t.columns.push_back(num_col("f0", "f0 ± U₀"));
   t.columns.push_back(text_col("verdict"));
+  t.columns.push_back(text_col("attention", {}, true));
+  t.columns.push_back(text_col("concerns", {}, true));
   add_factor_columns(t.columns);
   t.columns.push_back(text_col("status"));
   t.columns.push_back(num_col("grids"));
@@ -118,8 +126,7 @@ Table series_table(const std::vector<SeriesSummary>& series) {
   t.columns.push_back(num_col("failed"));
   t.columns.push_back(num_col("pending", {}, true));
   t.columns.push_back(text_col("method"));
-  t.columns.push_back(num_col("f0"));
-  t.columns.push_back(num_col("u0", "U0"));
+  t.columns.push_back(num_col("u0", "U0", true));
   t.columns.push_back(num_col("p"));
   t.columns.push_back(num_col("c"));
   t.columns.push_back(num_col("c1"));
@@ -138,20 +145,34 @@ Table series_table(const std::vector<SeriesSummary>& series) {
   t.columns.push_back(text_col("verdict_reasons", {}, true));
   t.columns.push_back(text_col("note", {}, true));
   t.columns.push_back(text_col("extrapolation_notes", {}, true));
-  for (const auto& s : series) {
+  const auto concerns = series_concerns(series, p_low, p_high);
+  std::vector<const SeriesConcerns*> concern_of(series.size(), nullptr);
+  for (const auto& c : concerns) concern_of[c.series] = &c;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const SeriesSummary& s = series[i];
+    const ExtrapolationView empty;
+    const ExtrapolationView& e = s.extrapolation ? *s.extrapolation : empty;
     std::vector<Cell> row;
     row.push_back(text_cell(s.label));
+    Cell f0 = number_cell(s.f0(), 8);
+    if (const auto v = s.f0()) {
+      const std::optional<double> u1 = e.grids.empty() ? std::nullopt : e.grids.front().u;
+      f0.shown = e.u0 ? format_value_u(*v, e.u0) : format_value_for_u(*v, u1);
+    }
+    row.push_back(f0);
     row.push_back(text_cell(s.verdict));
+    std::string concern_text;
+    if (concern_of[i])
+      for (const auto& t : concern_of[i]->concerns) concern_text += (concern_text.empty() ? "" : "; ") + t;
+    row.push_back(text_cell(concern_of[i] ? "yes" : "no"));
+    row.push_back(text_cell(concern_text));
     add_factor_cells(row, s.series);
     row.push_back(text_cell(series_status(s)));
     row.push_back(integer_cell(static_cast<long long>(s.series.grids.size())));
     row.push_back(integer_cell(s.converged()));
     row.push_back(integer_cell(s.failed));
     row.push_back(integer_cell(s.pending));
-    const ExtrapolationView empty;
-    const ExtrapolationView& e = s.extrapolation ? *s.extrapolation : empty;
     row.push_back(text_cell(e.method));
-    row.push_back(number_cell(s.f0(), 8));
     row.push_back(number_cell(e.u0, 3));
     // p and c belong to the power law: shown only when it is the chosen fit
     // (the store keeps them NULL for a mixed fit; the rejected fit's values
@@ -199,30 +220,32 @@ Table differences_table(const std::vector<SeriesSummary>& series,
     std::string exceeds = d.exceeds_u ? (*d.exceeds_u ? "yes" : "no") : "";
     t.rows.push_back({text_cell(d.factor), text_cell(d.value_a), text_cell(d.value_b),
                       text_cell(series[d.a].label), text_cell(series[d.b].label),
-                      number_cell(d.f0_a, 8), number_cell(d.f0_b, 8), percent_cell(d.relative),
-                      number_cell(d.u_a, 3), number_cell(d.u_b, 3), percent_cell(d.u_relative),
+                      value_cell(d.f0_a, d.u_a), value_cell(d.f0_b, d.u_b), percent_cell(d.relative),
+                      value_cell(d.u_a, d.u_a), value_cell(d.u_b, d.u_b), percent_cell(d.u_relative),
                       text_cell(exceeds), text_cell(verdicts)});
   }
   return t;
 }
 
-Table gci_table(const std::vector<SeriesSummary>& series) {
+Table gci_table(const std::vector<SeriesSummary>& series, double p_low, double p_high) {
   Table t;
   const bool external = all_external(series);  // h as declared, not Δ*
   t.columns = {text_col("series"),        num_col("h1", external ? "h1" : "Δ*1"), num_col("h2", external ? "h2" : "Δ*2"),
                num_col("h3", external ? "h3" : "Δ*3"), num_col("p"),                  num_col("f_ext", "φ_ext"),
-               num_col("gci_fine", "GCI_fine"), text_col("convergence"), text_col("status"),
+               num_col("gci_fine", "GCI_fine"), text_col("convergence"), text_col("status"), text_col("usable"),
                num_col("f0", "f0 (regression)"), num_col("f_ext_vs_f0", "(φ_ext−f0)/f0")};
   for (const auto& s : series) {
     if (!s.extrapolation) continue;
     const auto f0 = s.f0();
+    // φ_ext and f0 to the decimal U₀ supports, so the two compare digit by digit.
+    const auto u0 = s.extrapolation->u0;
     for (const GciView& g : s.extrapolation->gci) {
       std::optional<double> deviation;
       if (g.f_ext && f0 && *f0 != 0) deviation = (*g.f_ext - *f0) / *f0;
       t.rows.push_back({text_cell(s.label), number_cell(g.h[0], 4), number_cell(g.h[1], 4),
-                        number_cell(g.h[2], 4), number_cell(g.p, 3), number_cell(g.f_ext, 8),
+                        number_cell(g.h[2], 4), number_cell(g.p, 3), value_cell(g.f_ext, u0),
                         percent_cell(g.gci_fine), text_cell(g.convergence), text_cell(g.status),
-                        number_cell(f0, 8), percent_cell(deviation)});
+                        text_cell(gci_usability(g, p_low, p_high)), value_cell(f0, u0), percent_cell(deviation)});
     }
   }
   return t;
@@ -272,7 +295,7 @@ Table coverage_table(const std::vector<SeriesSummary>& series) {
 }
 
 std::string csv_by_series(const std::vector<SeriesSummary>& series,
-                          Table (*of_series)(const std::vector<SeriesSummary>&)) {
+                          const std::function<Table(const std::vector<SeriesSummary>&)>& of_series) {
   // The header from the first series' table: an external study's names h and value.
   Table head = of_series(series.empty() ? std::vector<SeriesSummary>{} : std::vector<SeriesSummary>{series.front()});
   head.rows.clear();

@@ -10,6 +10,7 @@
 //   coverage     the coverage self-check per series (series_coverage.h)
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "report/differences.h"
@@ -19,10 +20,10 @@
 namespace gridfree {
 
 Table grids_table(const std::vector<SeriesSummary>& series);
-Table series_table(const std::vector<SeriesSummary>& series);
+Table series_table(const std::vector<SeriesSummary>& series, double p_low, double p_high);
 Table differences_table(const std::vector<SeriesSummary>& series,
                         const std::vector<SeriesDifference>& differences);
-Table gci_table(const std::vector<SeriesSummary>& series);
+Table gci_table(const std::vector<SeriesSummary>& series, double p_low, double p_high);
 Table failures_table(const std::vector<SeriesSummary>& series);
 Table coverage_table(const std::vector<SeriesSummary>& series);
 
@@ -30,6 +31,6 @@ Table coverage_table(const std::vector<SeriesSummary>& series);
 // series at a time): the same text as to_csv(of_series(series)) without
 // holding every row as a Table (48 600 grids take 85 MB that way).
 std::string csv_by_series(const std::vector<SeriesSummary>& series,
-                          Table (*of_series)(const std::vector<SeriesSummary>&));
+                          const std::function<Table(const std::vector<SeriesSummary>&)>& of_series);
 
 }  // namespace gridfree

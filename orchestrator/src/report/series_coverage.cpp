@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "report/series_summary.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -75,7 +76,7 @@ std::string missed_windows(const CoverageCheck& c) {
   for (auto it = c.windows.rbegin(); it != c.windows.rend(); ++it) {
     if (!it->covered || *it->covered) continue;
     if (!out.empty()) out += "; ";
-    out += "Δ* " + format_g(it->h_coarse, 3) + "–" + format_g(it->h_fine, 3);
+    out += "Δ* " + format_cell_size(it->h_coarse) + "–" + format_cell_size(it->h_fine);
     if (it->distance) out += " (" + format_g(*it->distance, 2) + " U₁)";
   }
   return out;
@@ -93,6 +94,21 @@ std::optional<double> coverage_rate(const CoverageCheck& c) {
   return static_cast<double>(c.covered) / c.judged;
 }
 
+std::string coverage_not_made(const std::vector<SeriesSummary>& series) {
+  int unfinished = 0, most = 0;
+  for (const auto& s : series) {
+    if (s.incomplete) ++unfinished;
+    most = std::max(most, s.converged());
+  }
+  const std::string need = "a series needs all its grids and at least " + std::to_string(CoverageRules{}.min_series) +
+                           " of them converged";
+  if (unfinished > 0)
+    return "not yet made (" + need + "; " + std::to_string(unfinished) + " of " + std::to_string(series.size()) +
+           " series still have grids to run)";
+  return "not made, and it cannot be with these grids: " + need + ", and the most any series has is " +
+         std::to_string(most) + " (add finer grids to have it)";
+}
+
 std::string coverage_summary(const std::vector<SeriesSummary>& series) {
   int checked = 0, judged = 0, covered = 0, below = 0;
   for (const auto& s : series) {
@@ -102,7 +118,7 @@ std::string coverage_summary(const std::vector<SeriesSummary>& series) {
     covered += s.coverage->covered;
     below += s.coverage->below_promise() ? 1 : 0;
   }
-  if (checked == 0) return "not yet made (a series needs all its grids and at least 6 of them converged)";
+  if (checked == 0) return coverage_not_made(series);
   return "U₁ covered the full series' f0 in " + std::to_string(covered) + " of " + std::to_string(judged) +
          " coarser windows of " + std::to_string(checked) + " series; " + std::to_string(below) +
          " series below 95 %";

@@ -40,6 +40,11 @@ std::optional<double> worst_distance(const CoverageCheck& c);
 // covered / judged, empty without judged windows.
 std::optional<double> coverage_rate(const CoverageCheck& c);
 
+// Why no series has the check: "not yet made (…)" while grids are still to
+// run, else "not made, and it cannot be with these grids: …" (a finished
+// study of 5-grid series never has it).
+std::string coverage_not_made(const std::vector<SeriesSummary>& series);
+
 // "Coverage self-check" for the summary: totals over the checked series.
 std::string coverage_summary(const std::vector<SeriesSummary>& series);
 

@@ -46,7 +46,7 @@ std::string render_series_page(const ReportContent& c, const SeriesRowIndex& row
                       "Not checked: a series needs all its grids and at least 6 of them converged.");
   out += table_section({c.grids_table.file, c.grids_table.title, grids_table({s}), 0}, "grids", "No grids.",
                        kShownRows * 4, "../" + c.grids_table.file);
-  out += table_section({c.gci_table.file, c.gci_table.title, gci_table({s}), 0}, "gci", "No three converged grids.",
+  out += table_section({c.gci_table.file, c.gci_table.title, gci_table({s}, c.data.p_low, c.data.p_high), 0}, "gci", "No three converged grids.",
                        kShownRows * 4, "../" + c.gci_table.file);
   out += rows_section(c.failures_table, rows.failures, s.label, "failures", "None: every finished grid converged.");
   out += "</body>\n</html>\n";

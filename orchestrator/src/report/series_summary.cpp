@@ -41,7 +41,8 @@ const ExtrapolatedGrid* SeriesSummary::extrapolated(const GridPoint& grid) const
 std::string SeriesSummary::note() const {
   std::string out;
   if (insufficient()) {
-    out = "insufficient grids (" + std::to_string(converged()) + " converged, " +
+    // "solved" for grids (the solver converged), "converged" for verdicts.
+    out = "insufficient grids (" + std::to_string(converged()) + " solved, " +
           std::to_string(kMinGridsForUncertainty) + " needed): no uncertainty";
   }
   if (incomplete) {

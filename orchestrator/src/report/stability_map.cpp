@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -16,10 +17,10 @@ bool stab_starts_with(const std::string& text, const char* prefix) { return text
 
 // The column of a grid: its Δ* to 3 significant digits, so grids of one
 // nominal Δ* in domains of different sizes share a column.
-double stability_column_of(double delta_star) { return std::stod(format_g(delta_star, 3)); }
+double stability_column_of(double delta_star) { return std::stod(format_cell_size(delta_star)); }
 
 // "Δ* 0.5", or an external series' "h 0.005" (its declared h).
-std::string stability_delta_text(double h, bool external) { return (external ? "h " : "Δ* ") + format_g(h, 3); }
+std::string stability_delta_text(double h, bool external) { return (external ? "h " : "Δ* ") + format_cell_size(h); }
 
 // What a failure says in a line: the outcome word and the worker's reason.
 std::string stability_failure_text(const GridPoint& g, const std::string& outcome) {
@@ -90,15 +91,23 @@ std::string stability_line(const SeriesSummary& s) {
   return line;
 }
 
+std::string gci_usability(const GciView& g, double p_low, double p_high) {
+  if (g.convergence == "divergent" || g.convergence == "oscillatory") return g.convergence;
+  if (g.status != "ok" || !g.p || !g.f_ext) return "no p";
+  if (!(*g.p >= p_low && *g.p <= p_high)) return "p outside [" + format_g(p_low, 4) + ", " + format_g(p_high, 4) + "]";
+  return "usable";
+}
+
 MethodTally method_tally(const SeriesSummary& s, double p_low, double p_high) {
   MethodTally t;
   if (s.extrapolation) {
     for (const GciView& g : s.extrapolation->gci) {
       ++t.triplets;
-      if (g.convergence == "divergent") ++t.divergent;
-      else if (g.convergence == "oscillatory") ++t.oscillatory;
-      else if (g.status != "ok" || !g.p || !g.f_ext) ++t.no_number;
-      else if (!(*g.p >= p_low && *g.p <= p_high)) ++t.p_out_of_range;
+      const std::string use = gci_usability(g, p_low, p_high);
+      if (use == "divergent") ++t.divergent;
+      else if (use == "oscillatory") ++t.oscillatory;
+      else if (use == "no p") ++t.no_number;
+      else if (use != "usable") ++t.p_out_of_range;
       else ++t.gci_usable;
     }
     t.least_squares_usable = s.extrapolation->f0.has_value() && s.extrapolation->status == "ok";

@@ -76,6 +76,12 @@ inline constexpr std::size_t kStabilityMapMaxRows = 60;
 // (walking from the coarsest grid), or what holds instead.
 std::string stability_line(const SeriesSummary& series);
 
+// Whether the GCI of one triplet is usable (docs/REPORTS.md): "usable" when
+// its convergence is monotone, it has p and φ_ext, and p lies in
+// [p_low, p_high]; else the reason: "divergent", "oscillatory", "no p",
+// "p outside [p_low, p_high]". The GCI table and the tally below both use it.
+std::string gci_usability(const GciView& triplet, double p_low, double p_high);
+
 // The GCI and least-squares tally of a series; p_low, p_high: the study's
 // accepted range of the order.
 MethodTally method_tally(const SeriesSummary& series, double p_low, double p_high);

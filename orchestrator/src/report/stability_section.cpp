@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "report/atomic_file.h"
+#include "extrap/value_format.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -47,7 +48,7 @@ struct OutcomeStyle {
 
 // Colour-blind-safe fills (Okabe–Ito, lightened for the converged cells).
 constexpr OutcomeStyle kOutcomeStyles[] = {
-    {"converged", "#c7eadb", "converged (✓ outer iterations)"},
+    {"converged", "#c7eadb", "solved (✓ outer iterations)"},
     {"stalled", "#f0e442", "stalled (a limit cycle: numerics.stall_window)"},
     {"iteration_cap", "#e69f00", "cap: not converged at numerics.max_iterations"},
     {"diverged", "#d55e00", "diverged"},
@@ -101,7 +102,8 @@ std::string stability_intro(const StabilityMap& m) {
   return std::string("Stability: the outcome of every grid (one row per series, one column per ") +
          (m.external ? "h" : "Δ*") + ", coarsest on the left). " +
          std::to_string(m.series_with_failures) + " of " + std::to_string(m.series_total) +
-         " series have a failed grid. A converged cell gives its outer iterations; hover over a cell for the "
+         " series have a failed grid. A solved cell (its solver converged) gives its outer iterations; hover over a "
+         "cell for the "
          "worker's reason. The GCI of a triplet is counted usable when its convergence is monotone and its "
          "order p lies in the study's accepted range; least squares is usable when it gave f0.";
 }
@@ -151,7 +153,7 @@ Table stability_wide_table(const StabilityMap& m) {
   Table t;
   t.columns.push_back(stab_text("series"));
   const std::string axis = m.external ? "h" : "Δ*", csv = m.external ? "h_" : "delta_star_";
-  for (double h : m.columns) t.columns.push_back(stab_text(csv + format_g(h, 3), axis + " " + format_g(h, 3)));
+  for (double h : m.columns) t.columns.push_back(stab_text(csv + format_cell_size(h), axis + " " + format_cell_size(h)));
   for (const auto& r : m.rows) {
     std::vector<Cell> row{text_cell(r.label)};
     for (const auto& c : r.cells) row.push_back(text_cell(stability_cell_text(c)));
@@ -192,7 +194,7 @@ std::string stability_svg(const StabilityMap& m) {
       const StabilityCell& cell = row.cells[std::size_t(c)];
       if (!cell.present) continue;
       const int x = label_w + c * kCellW;
-      std::string tip = row.label + ", Δ* " + format_g(cell.delta_star, 4) + ": " + cell.outcome;
+      std::string tip = row.label + ", Δ* " + format_cell_size(cell.delta_star) + ": " + cell.outcome;
       if (cell.outcome == "converged") tip += " in " + std::to_string(cell.iterations) + " outer iterations";
       else if (!cell.reason.empty()) tip += ": " + cell.reason;
       if (cell.remedy_from > 0) tip += "; " + remedy_note(cell.remedy_from);

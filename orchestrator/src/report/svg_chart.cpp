@@ -24,6 +24,8 @@ constexpr std::array<const char*, 8> kPalette = {
 constexpr std::array<Marker, 6> kMarkers = {Marker::circle, Marker::square,  Marker::triangle,
                                             Marker::diamond, Marker::x_mark, Marker::cross};
 constexpr double kFont = 12.0;
+constexpr double kNarrowFont = 15.0;     // 75 % sub/superscripts stay ≥ 11 px at 1:1
+constexpr double kNarrowMinFont = 12.0;  // tick and axis labels never shrink below this
 
 bool usable(double v, AxisScale scale) {
   return std::isfinite(v) && (scale == AxisScale::linear || v > 0);
@@ -115,24 +117,26 @@ struct LabelBoxes {
 // A point label of font 10 at the first free place around its point
 // (above right, below left, above left, below right, right, left), or ""
 // when every place collides.
-std::string point_label(LabelBoxes& taken, double x, double y, const std::string& label) {
-  const double w = text_width_px(label, 10.0);
+std::string point_label(LabelBoxes& taken, double x, double y, const std::string& label, double font = 10.0) {
+  const double w = text_width_px(label, font);
+  const double grow = font - 10.0;  // a larger font: the box grows up and the places move out
   struct Place { double dx, baseline; bool end; };
   for (const Place& p : {Place{5, -7, false}, Place{-5, 16, true}, Place{-5, -7, true}, Place{5, 16, false},
                          Place{7, 4, false}, Place{-7, 4, true}}) {
     const double x0 = p.end ? x + p.dx - w : x + p.dx;
-    if (!taken.place({x0, y + p.baseline - 9, x0 + w, y + p.baseline + 2})) continue;
-    return text(x + p.dx, y + p.baseline, label,
-                std::string(" class=\"point-label\" font-size=\"10\" fill=\"#555\"") +
+    const double baseline = y + p.baseline + (p.baseline > 10 ? grow : 0);
+    if (!taken.place({x0, baseline - 9 - grow, x0 + w, baseline + 2})) continue;
+    return text(x + p.dx, baseline, label,
+                " class=\"point-label\" font-size=\"" + format_g(font, 3) + "\" fill=\"#555\"" +
                     (p.end ? " text-anchor=\"end\"" : ""));
   }
   return {};
 }
 
 // Font size at which `markup` is at most max_px wide (font_px if it fits).
-double fitting_font(const std::string& markup, double font_px, double max_px) {
+double fitting_font(const std::string& markup, double font_px, double max_px, double min_px = 0.0) {
   const double w = text_width_px(markup, font_px);
-  return w <= max_px ? font_px : std::floor(font_px * max_px / w * 10) / 10;
+  return w <= max_px ? font_px : std::max(min_px, std::floor(font_px * max_px / w * 10) / 10);
 }
 
 }  // namespace
@@ -145,6 +149,15 @@ const char* palette_colour(int index) {
 Marker marker_for(int index) {
   const int n = static_cast<int>(kMarkers.size());
   return kMarkers[static_cast<std::size_t>(((index % n) + n) % n)];
+}
+
+Chart narrow_chart(const Chart& chart) {
+  Chart out = chart;
+  out.narrow = true;
+  out.width = kNarrowWidth;
+  out.height = 400;
+  out.id = (chart.id.empty() ? chart.title : chart.id) + "-n";
+  return out;
 }
 
 double legend_width(const std::vector<std::string>& labels) {
@@ -212,34 +225,48 @@ std::string render_svg(const Chart& given) {
   }
   std::vector<std::string> legend_labels;
   for (const auto& e : legend) legend_labels.push_back(e.label);
-  const double legend_w = legend_width(legend_labels);
+  // Narrow (a phone): a larger font, the legend under the plot, no text
+  // below kNarrowMinFont (docs/REPORTS.md "Phone").
+  const bool narrow = chart.narrow;
+  const double font = narrow ? kNarrowFont : kFont;
+  const double min_font = narrow ? kNarrowMinFont : 0.0;
+  const double legend_w = narrow ? 0.0 : legend_width(legend_labels);
   if (legend_w > 280.0) chart.width += static_cast<int>(std::ceil(legend_w - 280.0));
   // Title, subtitle and note wrap to the chart's width; the chart grows by
   // the extra lines, so the plot keeps its size.
   const double title_scale = 1.1;  // bold text is about 10 % wider
   std::vector<std::string> title_lines = wrap_markup(chart.title, (chart.width - 24) / title_scale, 15.0);
   if (title_lines.empty()) title_lines.emplace_back();
-  const std::vector<std::string> subtitle_lines = wrap_markup(chart.subtitle, chart.width - 24.0, 12.0);
+  const std::vector<std::string> subtitle_lines = wrap_markup(chart.subtitle, chart.width - 24.0, font);
+  const double line_step = narrow ? font + 4 : 15.0;  // subtitle and note lines
   std::string note = chart.note;
   if (offscale_count > 0) {
     note += std::string(note.empty() ? "" : " ") + std::to_string(offscale_count) +
             (offscale_count == 1 ? " point" : " points") + " off scale (arrows on the edge).";
   }
   const double left = 78, right = chart.width - 16 - legend_w;
-  const std::vector<std::string> note_lines = wrap_markup(note, chart.width - left - 12.0, 11.0);
+  const double note_font = narrow ? font : 11.0;
+  const std::vector<std::string> note_lines =
+      wrap_markup(note, chart.width - (narrow ? 24.0 : left + 12.0), note_font);
   const double title_bottom = 22.0 + 19.0 * double(title_lines.size() - 1);
   const double top = subtitle_lines.empty() ? title_bottom + 22.0
-                                            : title_bottom + 18.0 + 15.0 * double(subtitle_lines.size() - 1) + 20.0;
-  const int extra_note = 14 * std::max(0, int(note_lines.size()) - 1);
-  chart.height += static_cast<int>(std::ceil(top - (subtitle_lines.empty() ? 44.0 : 60.0))) + extra_note;
-  const double bottom = chart.height - 66.0 - extra_note;  // room for the x label and the note lines
+                                            : title_bottom + 18.0 + line_step * double(subtitle_lines.size() - 1) + 20.0;
+  const double note_step = narrow ? line_step : 14.0;
+  const int extra_note = static_cast<int>(note_step * std::max(0, int(note_lines.size()) - 1));
+  const double legend_step = font + 6;
+  const int legend_h = narrow && !legend.empty() ? static_cast<int>(legend_step * double(legend.size()) + 8) : 0;
+  const int x_label_room = narrow ? 10 : 0;
+  chart.height += static_cast<int>(std::ceil(top - (subtitle_lines.empty() ? 44.0 : 60.0))) + extra_note + legend_h +
+                  x_label_room;
+  // Room for the x label, the legend (narrow) and the note lines.
+  const double bottom = chart.height - 66.0 - extra_note - legend_h - x_label_room;
   const AxisMap mx{chart.x.scale, xt.lo, xt.hi, left, right};
   const AxisMap my{chart.y.scale, yt.lo, yt.hi, bottom, top};
 
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << chart.width << "\" height=\""
       << chart.height << "\" viewBox=\"0 0 " << chart.width << " " << chart.height
-      << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << kFont
+      << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << font
       << "\" role=\"img\" aria-label=\"" << xml_escape(plain_text(chart.title)) << "\">\n";
   svg << "<title>" << xml_escape(plain_text(chart.title)) << "</title>\n";
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
@@ -251,7 +278,7 @@ std::string render_svg(const Chart& given) {
                 " text-anchor=\"middle\" font-size=\"15\" font-weight=\"bold\"")
         << "\n";
   for (std::size_t i = 0; i < subtitle_lines.size(); ++i)
-    svg << text(chart.width / 2.0, title_bottom + 18 + 15.0 * double(i), subtitle_lines[i],
+    svg << text(chart.width / 2.0, title_bottom + 18 + line_step * double(i), subtitle_lines[i],
                 " text-anchor=\"middle\" fill=\"#444444\"")
         << "\n";
 
@@ -269,23 +296,23 @@ std::string render_svg(const Chart& given) {
   // y label wider than the margin gets a smaller font.
   for (double v : xt.major) {
     const std::string label = format_tick(v, xt, chart.x.scale) + chart.x.tick_suffix;
-    const double half = text_width_px(label, kFont) / 2;
-    svg << text(std::clamp(mx(v), 2 + half, chart.width - 2 - half), bottom + 18, label, " text-anchor=\"middle\"");
+    const double half = text_width_px(label, font) / 2;
+    svg << text(std::clamp(mx(v), 2 + half, chart.width - 2 - half), bottom + 6 + font, label, " text-anchor=\"middle\"");
   }
   for (double v : yt.major) {
     const std::string label = format_tick(v, yt, chart.y.scale) + chart.y.tick_suffix;
-    const double font = fitting_font(label, kFont, left - 32);  // right of the y axis label
+    const double fit = fitting_font(label, font, left - 32, min_font);  // right of the y axis label
     svg << text(left - 8, my(v) + 4, label,
-                " text-anchor=\"end\"" + (font < kFont ? " font-size=\"" + format_g(font, 3) + "\"" : std::string()));
+                " text-anchor=\"end\"" + (fit < font ? " font-size=\"" + format_g(fit, 3) + "\"" : std::string()));
   }
   svg << "</g>\n";
-  auto axis_font = [](const std::string& label, double room) {
-    const double font = fitting_font(label, kFont, room);
-    return font < kFont ? " font-size=\"" + format_g(font, 3) + "\"" : std::string();
+  auto axis_font = [&](const std::string& label, double room) {
+    const double fit = fitting_font(label, font, room, min_font);
+    return fit < font ? " font-size=\"" + format_g(fit, 3) + "\"" : std::string();
   };
   // The x label under the plot's middle, or the chart's when wider than the plot.
-  const double xmid = text_width_px(chart.x.label, kFont) <= right - left ? (left + right) / 2 : chart.width / 2.0;
-  svg << text(xmid, bottom + 38, chart.x.label, " text-anchor=\"middle\"" + axis_font(chart.x.label, chart.width - 4.0))
+  const double xmid = text_width_px(chart.x.label, font) <= right - left ? (left + right) / 2 : chart.width / 2.0;
+  svg << text(xmid, bottom + 26 + font + x_label_room, chart.x.label, " text-anchor=\"middle\"" + axis_font(chart.x.label, chart.width - 4.0))
       << "\n";
   const double ymid = (top + bottom) / 2;
   svg << text(18, ymid, chart.y.label,
@@ -364,7 +391,7 @@ std::string render_svg(const Chart& given) {
         const std::string marker = svg_marker(s.marker, mx(x), no_value ? bottom : my(y), colour, s.hollow);
         points << (s.faded ? "<g opacity=\"0.35\">" + marker + "</g>" : marker) << "\n";
         if (i < s.point_labels.size() && !s.point_labels[i].empty() && !no_value) {
-          const std::string label = point_label(labels, mx(x), my(y), s.point_labels[i]);
+          const std::string label = point_label(labels, mx(x), my(y), s.point_labels[i], narrow ? font - 2 : 10.0);
           if (!label.empty()) points << label << "\n";
         }
         continue;
@@ -380,13 +407,16 @@ std::string render_svg(const Chart& given) {
 
   // 5. Legend and note.
   if (!legend.empty()) {
-    const double lx = right + 14;
-    const std::size_t max_rows = static_cast<std::size_t>((bottom - top) / 18.0);
+    // Beside the plot, or (narrow) under the x label, one entry a line.
+    const double lx = narrow ? 12 : right + 14;
+    const double ly0 = narrow ? bottom + 46 + font + x_label_room : top + 10;
+    const double step = narrow ? legend_step : 18.0;
+    const std::size_t max_rows = narrow ? legend.size() : static_cast<std::size_t>((bottom - top) / 18.0);
     const std::size_t rows = legend.size() > max_rows ? max_rows - 1 : legend.size();
     svg << "<g>";
     for (std::size_t i = 0; i < rows; ++i) {
       const auto& e = legend[i];
-      const double ly = top + 10 + 18.0 * double(i);
+      const double ly = ly0 + step * double(i);
       if (e.faded) svg << "<g opacity=\"0.45\">";
       if (e.line) {
         svg << "<path d=\"M" << px(lx) << " " << px(ly) << "h22\" stroke=\"" << e.colour
@@ -397,13 +427,13 @@ std::string render_svg(const Chart& given) {
       if (e.faded) svg << "</g>";
     }
     if (rows < legend.size()) {
-      svg << text(lx, top + 10 + 18.0 * double(rows) + 4, "... and " + std::to_string(legend.size() - rows) + " more");
+      svg << text(lx, ly0 + step * double(rows) + 4, "... and " + std::to_string(legend.size() - rows) + " more");
     }
     svg << "</g>\n";
   }
   for (std::size_t i = 0; i < note_lines.size(); ++i)
-    svg << text(left, chart.height - 10 - 14.0 * double(note_lines.size() - 1 - i), note_lines[i],
-                " fill=\"#444444\" font-size=\"11\"")
+    svg << text(narrow ? 12.0 : left, chart.height - 10 - note_step * double(note_lines.size() - 1 - i), note_lines[i],
+                " fill=\"#444444\" font-size=\"" + format_g(note_font, 3) + "\"")
         << "\n";
   svg << "</svg>\n";
   return svg.str();

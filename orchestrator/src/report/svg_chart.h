@@ -76,7 +76,15 @@ struct Chart {
   std::vector<ChartHLine> hlines;
   std::string note;               // one line of text under the plot
   int width = 720, height = 450;
+  // The phone rendering (narrow_chart): a 15 px font, the legend under the
+  // plot, no text that shrinks below 12 px.
+  bool narrow = false;
 };
+
+// The same chart laid out for a phone: kNarrowWidth wide, `narrow` set,
+// its element ids suffixed so both renderings can sit on one page.
+inline constexpr int kNarrowWidth = 360;
+Chart narrow_chart(const Chart& chart);
 
 // Print-friendly, colour-blind-safe palette (Okabe & Ito), as "#rrggbb".
 const char* palette_colour(int index);

@@ -35,6 +35,10 @@ Cell text_cell(std::string value);
 Cell number_cell(const std::optional<double>& value, int shown_digits = 6);
 Cell percent_cell(const std::optional<double>& fraction, int shown_digits = 3);
 Cell integer_cell(long long value);
+// A value shown to the decimal place `u` supports (extrap/value_format.h),
+// so a column of values of one U keeps its trailing zeros ("1021.0000"
+// beside "1021.0002", not "1021").
+Cell value_cell(const std::optional<double>& value, const std::optional<double>& u);
 
 // `with_header` false: the rows alone (a table written in parts).
 std::string to_csv(const Table& table, bool with_header = true);
@@ -46,6 +50,8 @@ Table first_rows(const Table& table, std::size_t n);
 std::map<std::string, std::vector<std::size_t>> rows_by(const Table& table, const std::string& column);
 // The same columns with the given rows, in the given order.
 Table rows_at(const Table& table, const std::vector<std::size_t>& rows);
+// Markdown and HTML show a numeric column in one notation: when one of its
+// plain numbers is in exponent form, all are (same significant digits).
 std::string to_markdown(const Table& table);
 // <table class="... fit-..."> with <thead>/<tbody>; cells' classes carry
 // alignment, the fit-... class the table's print layout (table_print_fit.h).

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "extrap/value_format.h"
+
 namespace gridfree {
 
 std::string xml_escape(std::string_view text) {
@@ -91,7 +93,7 @@ std::string format_exact(const std::optional<double>& value) {
 
 std::string format_percent(const std::optional<double>& fraction, int digits) {
   if (!fraction) return {};
-  return format_g(*fraction * 100.0, digits) + "%";
+  return format_percent_fixed(*fraction, digits);
 }
 
 std::string slugify(std::string_view text) {
@@ -105,25 +107,11 @@ std::string slugify(std::string_view text) {
 }
 
 std::string format_with_uncertainty(double value, const std::optional<double>& u, int digits) {
-  if (!u || !std::isfinite(*u) || *u <= 0 || !std::isfinite(value)) return format_g(value, digits);
-  // Decimal place of U's second significant digit: U = 1.37 → 1 decimal.
-  const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(*u))));
-  if (decimals == 0) {
-    // U ≥ 10: round both to U's two significant digits.
-    const double step = std::pow(10.0, std::floor(std::log10(*u)) - 1);
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%.0f ± %.0f", std::round(value / step) * step, std::round(*u / step) * step);
-    return buf;
-  }
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%.*f ± %.*f", decimals, value, decimals, *u);
-  return buf;
+  return format_value_u(value, u, digits);
 }
 
 std::string format_to_uncertainty_digits(double value, const std::optional<double>& u, int digits) {
-  const std::string s = format_with_uncertainty(value, u, digits);
-  const auto pm = s.find(" ± ");
-  return pm == std::string::npos ? s : s.substr(0, pm);
+  return format_value_for_u(value, u, digits);
 }
 
 }  // namespace gridfree

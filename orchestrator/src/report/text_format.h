@@ -29,12 +29,14 @@ std::string format_exact(double value);
 std::string format_g(const std::optional<double>& value, int digits = 6);
 std::string format_exact(const std::optional<double>& value);
 
-// value·100 with `digits` significant digits and a % sign; "" when absent.
+// value·100 with `digits` significant digits and a % sign, never in exponent
+// notation (format_percent_fixed); "" when absent.
 std::string format_percent(const std::optional<double>& fraction, int digits = 3);
 
 // "1017.3 ± 1.4": U rounded to two significant digits and the value to the
-// same decimal place (no more digits than U supports). Without a usable U
-// (absent, zero or not finite) the value alone with `digits` significant digits.
+// same decimal place — format_value_u of extrap/value_format.h, the one
+// formatter the console shares (U = 0: "± 0"; no usable U: the value alone
+// with `digits` significant digits).
 std::string format_with_uncertainty(double value, const std::optional<double>& u, int digits = 6);
 // The value part of format_with_uncertainty alone ("1017.3"): rounded to the
 // decimal place U supports, without "± U" — for a value U does not belong to

@@ -14,6 +14,7 @@
 
 #include "core/version.h"
 #include "extrap/self_check.h"
+#include "extrap/value_format.h"
 #include "extrap/verdict.h"
 #include "report/report.h"
 #include "report/series_coverage.h"
@@ -62,26 +63,17 @@ void demote_flagged_json(const CoverageCheck& check, std::vector<double> h, nloh
   ex["verdict"]["next_h"] = v.next_h ? nlohmann::json(*v.next_h) : nlohmann::json(nullptr);
 }
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-// "verdict converged: f0 = 1017.001 ± 1.478, finest f1 = 1015.872 ± 1.478 (RDE 0.15 %)" — never "ok".
+// "verdict converged: f0 = 1017.0 ± 1.5, finest f1 = 1015.9 ± 1.5 (RDE 0.15%)" — never "ok";
+// the digits U supports (extrap/value_format.h), as the report prints them.
 std::string verdict_log_text(const nlohmann::json& ex, const VerdictRow& verdict) {
-  std::string out = "verdict " + verdict.value;
-  const auto f0 = num(ex, "f0");
-  // Each value with its own interval: f0 ± U₀, the finest grid's f₁ ± U₁.
-  if (f0) out += ": f0 = " + fixed(*f0, 3);
-  if (const auto u0 = num(ex, "u0"); f0 && u0) out += " ± " + fixed(*u0, 3);
+  std::optional<double> f1, u, rde;
   if (ex.contains("grids") && ex["grids"].is_array() && !ex["grids"].empty()) {
-    const auto f1 = num(ex["grids"][0], "f");
-    const auto u = num(ex["grids"][0], "u");
-    const auto rde = num(ex["grids"][0], "rde");
-    if (f1 && u) out += ", finest f1 = " + fixed(*f1, 3) + " ± " + fixed(*u, 3);
-    if (rde) out += " (RDE " + fixed(100 * *rde, 2) + " %)";
+    f1 = num(ex["grids"][0], "f");
+    u = num(ex["grids"][0], "u");
+    rde = num(ex["grids"][0], "rde");
   }
+  // Each value with its own interval: f0 ± U₀, the finest grid's f₁ ± U₁.
+  std::string out = verdict_line(verdict.value, num(ex, "f0"), num(ex, "u0"), f1, u, rde);
   const auto reasons = nlohmann::json::parse(verdict.reasons_json, nullptr, false);
   if (verdict.value != "converged" && reasons.is_array() && !reasons.empty() && reasons[0].is_string())
     out += "; " + reasons[0].get<std::string>();

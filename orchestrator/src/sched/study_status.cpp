@@ -6,6 +6,8 @@
 #include <cstdio>
 
 #include "exec/executor.h"
+#include "extrap/fm_uncertainty.h"
+#include "extrap/value_format.h"
 #include "sched/study_eta.h"
 #include "study/study_plan.h"
 
@@ -38,19 +40,29 @@ nlohmann::json series_row(Store& store, const SeriesInfo& s) {
     ++total;
     if (p.job_status == "done" || p.job_status == "failed") ++done;
   }
-  std::optional<double> f0;
+  std::optional<double> f0, sigma_re;
   for (const auto& e : store.extrapolations(s.id))
-    if (e.chosen) f0 = e.f0;
-  std::optional<double> rde;
+    if (e.chosen) {
+      f0 = e.f0;
+      sigma_re = e.sigma_re;
+    }
+  std::optional<double> rde, f1, u1;
   double finest = INFINITY;
   for (const auto& u : store.uncertainties(s.id))
     if (u.delta_star < finest) {
       finest = u.delta_star;
       rde = u.rde;
+      f1 = u.f;
+      u1 = u.u;
     }
+  // U₀ as the extrapolation defines it (docs/EXTRAPOLATION.md "U₀"), from the
+  // stored f0, σ_RE and finest value.
+  std::optional<double> u0;
+  if (f0 && sigma_re && f1) u0 = extrapolated_value_uncertainty(*f0, *f1, *sigma_re);
   return {{"series", s.key.label()}, {"grids_done", done},  {"grids", total}, {"status", s.status},
           {"verdict", s.verdict.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.verdict)},
-          {"f0", opt(f0)},           {"finest_rde", opt(rde)}};
+          {"f0", opt(f0)},           {"u0", opt(u0)},       {"f1", opt(f1)},  {"u1", opt(u1)},
+          {"finest_rde", opt(rde)}};
 }
 
 }  // namespace
@@ -98,14 +110,24 @@ nlohmann::json study_detail(Store& store, long long study_id, const std::filesys
 std::string study_detail_text(const nlohmann::json& d) {
   std::string out;
   char line[512];
-  std::snprintf(line, sizeof line, "%-34s %7s %-18s %12s %9s\n", "series", "grids", "verdict", "f0", "RDE fine");
+  // f0 ± U₀ and the finest grid's f₁ ± U₁ with the digits U supports
+  // (extrap/value_format.h), as the report prints them.
+  const auto value = [](const nlohmann::json& j) {
+    return j.is_number() ? std::optional<double>(j.get<double>()) : std::nullopt;
+  };
+  std::snprintf(line, sizeof line, "%-34s %-10s %-16s %-22s %-22s %9s\n", "series", "grids done", "verdict",
+                "f0 ± U0", "finest f1 ± U1", "RDE fine");
   out += line;
   for (const auto& s : d["series"]) {
     const std::string grids = std::to_string(s["grids_done"].get<int>()) + "/" + std::to_string(s["grids"].get<int>());
     const std::string verdict = s["verdict"].is_string() ? s["verdict"].get<std::string>() : "(" + s["status"].get<std::string>() + ")";
-    const std::string rde = s["finest_rde"].is_number() ? cell(s["finest_rde"].get<double>() * 100, "%.2f %%") : "-";
-    std::snprintf(line, sizeof line, "%-34s %7s %-18s %12s %9s\n", s["series"].get<std::string>().c_str(),
-                  grids.c_str(), verdict.c_str(), cell(s["f0"], "%.4f").c_str(), rde.c_str());
+    const std::string rde = s["finest_rde"].is_number() ? format_percent_fixed(s["finest_rde"].get<double>()) : "-";
+    const auto f0 = value(s.value("f0", nlohmann::json())), f1 = value(s.value("f1", nlohmann::json()));
+    const auto u0 = value(s.value("u0", nlohmann::json())), u1 = value(s.value("u1", nlohmann::json()));
+    const std::string f0_text = f0 ? format_value_u(*f0, u0) : "-";
+    const std::string f1_text = f1 ? format_value_u(*f1, u1) : "-";
+    std::snprintf(line, sizeof line, "%-34s %-10s %-16s %-22s %-22s %9s\n", s["series"].get<std::string>().c_str(),
+                  grids.c_str(), verdict.c_str(), f0_text.c_str(), f1_text.c_str(), rde.c_str());
     out += line;
   }
   if (!d["running"].empty()) {

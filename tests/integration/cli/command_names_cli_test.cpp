@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "run_command.h"
 #include "scratch_dir.h"
@@ -83,6 +85,42 @@ TEST(CommandNamesCli, HelpCommandIsTheCommandsHelp) {
   const CommandRun typo = run_executable("gridfree", "help stauts", dir);
   EXPECT_EQ(typo.exit_code, 2) << typo.err;
   EXPECT_NE(typo.err.find("did you mean 'status'?"), std::string::npos) << typo.err;
+}
+
+// One error style (cli_errors.h): every failure a user causes prints lines
+// starting "error: ", the parser's own messages included, points at the
+// command's help, and never prints the path the program ran from; `help run`
+// puts the Slurm flags under their own heading.
+TEST(CommandNamesCli, EveryUserErrorHasOneStyleWithoutTheBuildPath) {
+  const fs::path dir = names_dir("error_style");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "error: a subcommand is required\nrun 'gridfree --help' for the options"},
+      {"run", "error: STUDY is required\nrun 'gridfree run --help' for the options"},
+      {"run --jobs x s.json", "error: could not convert: --jobs = x"},
+      {"runn", "error: unknown command 'runn'; did you mean 'run'?\nrun 'gridfree --help' for the commands"},
+      {"validate missing.json", "error: missing.json: "}};
+  for (const auto& [args, expected] : cases) {
+    const CommandRun r = run_executable("gridfree", args, dir);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind(expected, 0), 0u) << args << ": " << r.err;
+    EXPECT_EQ(r.err.find('/'), std::string::npos) << "a path in: " << r.err;
+    for (std::size_t at = 0; at < r.err.size();) {  // every line an error or the help pointer
+      const std::string line = r.err.substr(at, r.err.find('\n', at) - at);
+      EXPECT_TRUE(line.rfind("error: ", 0) == 0 || line.rfind("run '", 0) == 0) << args << ": " << line;
+      at = r.err.find('\n', at);
+      at = at == std::string::npos ? r.err.size() : at + 1;
+    }
+  }
+  // The worker prints its input errors the same way.
+  const CommandRun worker = run_executable("gridfree-worker", "solve missing.json", dir);
+  EXPECT_EQ(worker.exit_code, 2) << worker.err;
+  EXPECT_EQ(worker.err.rfind("error: missing.json: ", 0), 0u) << worker.err;
+  const CommandRun help = run_executable("gridfree", "help run", dir);
+  EXPECT_NE(help.out.find("Usage: gridfree run"), std::string::npos) << help.out;
+  const auto slurm = help.out.find("Slurm (--executor slurm only):");
+  ASSERT_NE(slurm, std::string::npos) << help.out;
+  EXPECT_GT(help.out.find("--partition"), slurm);
+  EXPECT_LT(help.out.find("--jobs"), slurm);
 }
 
 }  // namespace

@@ -193,7 +193,7 @@ TEST(ExternalFakeSolver, InvalidJobsExitTwoNamingThePath) {
   auto r = run_fake("undefined_placeholder", job);
   EXPECT_EQ(r.code, 2);
   EXPECT_TRUE(r.result.is_null());
-  EXPECT_NE(r.err.find("/case/external/render/0: params:1: @@mode@@ is not a variable (variables: N)"),
+  EXPECT_NE(r.err.find("/case/external/render/0: params:1: @@mode@@ is not a variable (variables: N, cores)"),
             std::string::npos)
       << r.err;
   job = fake_job(kFakeTemplate, 0, 4);

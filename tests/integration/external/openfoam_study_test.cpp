@@ -98,7 +98,15 @@ TEST_F(OpenFoamStudy, RunGivesTheDeclaredHAVerdictAndTheQuantity) {
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*) FROM results WHERE status = 'converged' AND "
                                  "json_extract(result_json, '$.quantities.mean_u2') > 0"),
             "5");
-  EXPECT_EQ(ts::sqlite_query(db, "SELECT verdict FROM series WHERE quantity = 'mean_u2'"), "converged");
+  // The verdict follows the finest grid's RDE (docs/EXTRAPOLATION.md
+  // "Verdicts"): on these coarse grids (N <= 40) the default method's U1 is
+  // about 6 % of f0, above the 5 % a converged verdict allows, so the series
+  // is pre-asymptotic and says why (the shipped grids, N = 20 ... 80, give
+  // converged: docs/EXTERNAL.md "Tutorial").
+  EXPECT_EQ(ts::sqlite_query(db, "SELECT verdict FROM series WHERE quantity = 'mean_u2'"), "pre-asymptotic");
+  const auto reasons = ts::sqlite_query(db, "SELECT verdict_reasons FROM series WHERE quantity = 'mean_u2'");
+  EXPECT_NE(reasons.find("the finest grid's RDE"), std::string::npos) << reasons;
+  EXPECT_NE(reasons.find("exceeds 5 %"), std::string::npos) << reasons;
   const auto fit = ts::sqlite_query(db, "SELECT f0 || ' ' || p || ' ' || sigma_re FROM extrapolations WHERE chosen = 1");
   std::istringstream fs_(fit);
   double f0 = 0, p = 0, sigma = 0;

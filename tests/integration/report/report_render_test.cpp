@@ -135,7 +135,8 @@ TEST_F(ReportRender, ChromiumRendersTheSvgCharts) {
   const std::string text = slurp(dom);
   // The parsed DOM holds every inline chart as an svg element, with its
   // drawn content, and the page title.
-  EXPECT_EQ(count_of(text, "<svg"), static_cast<int>(files_.svg.size()) + 1);  // + the stability map (not a chart)
+  // Each chart twice (wide and narrow, html_blocks.h figure) + the stability map (not a chart).
+  EXPECT_EQ(count_of(text, "<svg"), 2 * static_cast<int>(files_.svg.size()) + 1);
   EXPECT_GE(count_of(text, "<circle"), 12);  // 6 + 6 converged grids in the Fig. 1 charts
   EXPECT_NE(text.find("<title>Grid-convergence report: render-check</title>"), std::string::npos);
   EXPECT_NE(text.find("What a target costs"), std::string::npos);
@@ -265,7 +266,8 @@ TEST(ReportRenderEnsembles, ChromiumRendersTheBudgetChart) {
                           fs::absolute(files.html).string() + "' > '" + dom.string() + "' 2>/dev/null";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   const std::string text = slurp(dom);
-  EXPECT_EQ(count_of(text, "<svg"), static_cast<int>(files.svg.size()) + 1);  // + the stability map (not a chart)
+  // Each chart twice (wide and narrow) + the stability map (not a chart).
+  EXPECT_EQ(count_of(text, "<svg"), 2 * static_cast<int>(files.svg.size()) + 1);
   EXPECT_NE(text.find("Ensembles and uncertainty budget"), std::string::npos);
   EXPECT_NE(text.find("Uncertainty budget, ensemble snap"), std::string::npos);
   EXPECT_NE(text.find("instance spread s/|mean|"), std::string::npos);

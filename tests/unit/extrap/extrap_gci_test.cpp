@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Three-grid GCI (Celik et al. 2008) against the paper's worked examples and
 // against hand-computed cases, plus its failure modes.
+#include <array>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -76,6 +77,64 @@ TEST(ExtrapGci, ConvergenceLabels) {
   EXPECT_EQ(*gci_triplet({1, 2, 4}, {1.0, 1.5, 1.2}).convergence, "oscillatory");  // R = 0.5/−0.3
   EXPECT_EQ(*gci_triplet({1, 2, 4}, {1.0, 2.0, 2.5}).convergence, "divergent");    // R = 1/0.5 = 2
   EXPECT_EQ(*gci_triplet({1, 2, 4}, {1.0, 1.2, 2.0}).convergence, "monotone");     // R = 0.25
+}
+
+// Exact f0 + k h^p on unequal ratios, as a series has after a failed grid
+// is dropped (r21 = 1.43, r32 = 1.19). The rule R = ε21/ε32 < 1 called this
+// divergent: here R = (r21^p − 1)/(r21^p (r32^p − 1)) = 1.36 at p = 1.6.
+GciTriplet exact_triplet(double f0, double k, double p, double h1, double r21, double r32) {
+  const std::array<double, 3> h{h1, h1 * r21, h1 * r21 * r32};
+  return gci_triplet(h, {f0 + k * std::pow(h[0], p), f0 + k * std::pow(h[1], p), f0 + k * std::pow(h[2], p)});
+}
+
+TEST(ExtrapGci, UnequalRatiosOfExactDataAreMonotone) {
+  for (const double p : {0.6, 1.0, 1.6, 2.0, 3.0}) {
+    for (const double k : {40.0, -40.0}) {  // from above and from below
+      const GciTriplet t = exact_triplet(1015.855, k, p, 0.5, 1.43, 1.19);
+      ASSERT_TRUE(t.convergence) << p;
+      EXPECT_EQ(*t.convergence, "monotone") << "p " << p << " k " << k << " R " << *t.ratio;
+      ASSERT_EQ(t.status, "ok");
+      // One term: the implicit equation and Richardson extrapolation are exact
+      // up to the iteration's 1e-13 and rounding in the differences.
+      EXPECT_NEAR(*t.p, p, 1e-8 * p) << p;
+      EXPECT_NEAR(*t.f_ext, 1015.855, 1e-8) << p;
+    }
+  }
+  // The case of the report: p = 1.6 has R > 1.
+  EXPECT_GT(*exact_triplet(1015.855, 40, 1.6, 0.5, 1.43, 1.19).ratio, 1.3);
+  // And the reverse order of ratios (r21 < r32), where R < 1 held already.
+  EXPECT_EQ(*exact_triplet(2.0, 1.0, 1.6, 0.1, 1.19, 1.43).convergence, "monotone");
+}
+
+TEST(ExtrapGci, UnequalRatiosOfDivergingDataAreDivergent) {
+  // f = f0 + k h^p with p < 0: the differences grow as h falls. With these
+  // ratios ε32/ε21 = g(p) < g(0+) = ln r32/ln r21 = 0.487 for every p < 0.
+  for (const double p : {-0.3, -1.0, -2.0}) {
+    const GciTriplet t = exact_triplet(1.0, 1.0, p, 0.5, 1.43, 1.19);
+    ASSERT_TRUE(t.convergence);
+    EXPECT_EQ(*t.convergence, "divergent") << p;
+  }
+  // Equal differences on unequal ratios: ε32/ε21 = 1 < ln 10/ln 2 = 3.32.
+  EXPECT_EQ(*gci_triplet({1, 2, 20}, {1.0, 2.0, 3.0}).convergence, "divergent");
+  // Equal differences with r21 = 1.43 > r32 = 1.19: 1 > 0.487, so a p > 0
+  // fits (the coarser step is smaller): monotone, not divergent.
+  EXPECT_EQ(*gci_triplet({0.5, 0.715, 0.85085}, {1.0, 2.0, 3.0}).convergence, "monotone");
+}
+
+TEST(ExtrapGci, UnequalRatiosOfAlternatingDataAreOscillatory) {
+  // f0 + k (−1)^i h_i^p: the sign of ε32/ε21 is negative whatever the ratios.
+  const std::array<double, 3> h{0.5, 0.5 * 1.43, 0.5 * 1.43 * 1.19};
+  const GciTriplet t = gci_triplet(h, {1 + std::pow(h[0], 1.5), 1 - std::pow(h[1], 1.5), 1 + std::pow(h[2], 1.5)});
+  ASSERT_TRUE(t.convergence);
+  EXPECT_EQ(*t.convergence, "oscillatory");
+}
+
+TEST(ExtrapGci, EqualRatiosKeepTheRatioRule) {
+  // r21 = r32: ln r32/ln r21 = 1, so monotone ⇔ ε32/ε21 > 1 ⇔ 0 < R < 1.
+  for (const double R : {0.1, 0.5, 0.99, 1.0, 1.01, 2.0}) {
+    const GciTriplet t = gci_triplet({1, 2, 4}, {1.0, 1.0 + R, 1.0 + R + 1.0});
+    EXPECT_EQ(*t.convergence, R < 1 ? "monotone" : "divergent") << R;
+  }
 }
 
 TEST(ExtrapGci, ZeroDifferenceHasNoNumbers) {

@@ -90,6 +90,34 @@ TEST(StabilityMethods, GciTripletsAreCountedUsableOnlyWhenMonotoneWithPInRange) 
   EXPECT_FALSE(method_tally(s, 0.5, 2.1).least_squares_usable);
 }
 
+// The GCI table's `usable` column and the tally apply one rule: a status-ok
+// triplet with p = 4.22 is "p outside the range" in both.
+TEST(StabilityMethods, GciTableAndTallyAgreeOnEveryTriplet) {
+  SeriesSummary s = stability_series_with({{2.0, "converged"}});
+  ExtrapolationView v;
+  v.status = "ok";
+  v.f0 = 1000;
+  for (const auto& [p, conv] : std::vector<std::pair<std::optional<double>, std::string>>{
+           {4.22, "monotone"}, {1.0, "monotone"}, {1.0, "divergent"}, {std::nullopt, "monotone"}}) {
+    GciView g;
+    g.p = p;
+    g.f_ext = 1000;
+    g.convergence = conv;
+    g.status = "ok";
+    v.gci.push_back(g);
+  }
+  s.extrapolation = v;
+  EXPECT_EQ(gci_usability(v.gci[0], 0.5, 2.1), "p outside [0.5, 2.1]");
+  EXPECT_EQ(gci_usability(v.gci[1], 0.5, 2.1), "usable");
+  EXPECT_EQ(gci_usability(v.gci[2], 0.5, 2.1), "divergent");
+  EXPECT_EQ(gci_usability(v.gci[3], 0.5, 2.1), "no p");
+  const MethodTally t = method_tally(s, 0.5, 2.1);
+  EXPECT_EQ(t.p_out_of_range, 1);
+  EXPECT_EQ(t.gci_usable, 1);
+  EXPECT_EQ(t.divergent, 1);
+  EXPECT_EQ(t.no_number, 1);
+}
+
 TEST(StabilityMap, FailuresFirstOneColumnPerDeltaStarAndTheCapSaysWhatItOmits) {
   std::vector<SeriesSummary> all;
   for (int i = 0; i < 5; ++i) {

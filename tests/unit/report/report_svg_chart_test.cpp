@@ -244,7 +244,7 @@ TEST(ReportText, ValueRoundedToTheDigitsItsUncertaintySupports) {
   EXPECT_EQ(format_with_uncertainty(1158.8123, 0.0123), "1158.812 ± 0.012");
   EXPECT_EQ(format_with_uncertainty(123456.0, 1234.0), "123500 ± 1200");
   EXPECT_EQ(format_with_uncertainty(1158.8, std::nullopt), "1158.8");
-  EXPECT_EQ(format_with_uncertainty(1158.8, 0.0), "1158.8");
+  EXPECT_EQ(format_with_uncertainty(1158.8, 0.0), "1158.8 ± 0");  // said, never "± 0.000"
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ TEST(ReportSeries, SummaryCountsAndSortsGrids) {
   EXPECT_EQ(s[2].pending, 1);
   EXPECT_TRUE(s[2].insufficient());
   EXPECT_TRUE(s[2].incomplete);
-  EXPECT_NE(s[2].note().find("insufficient grids (3 converged, 4 needed)"), std::string::npos);
+  EXPECT_NE(s[2].note().find("insufficient grids (3 solved, 4 needed)"), std::string::npos);
   EXPECT_NE(s[2].note().find("incomplete (1 of 4 grids pending)"), std::string::npos);
   EXPECT_FALSE(s[2].f0().has_value());
   // |f − f0|/f0 of A's coarsest grid: 16/1000.
@@ -113,7 +113,7 @@ TEST(ReportDifferences, DifferenceAgainstCombinedUncertaintyAndVerdicts) {
 }
 
 TEST(ReportTables, PowerLawPAndCShownOnlyWhenThePowerLawIsChosen) {
-  const Table t = series_table(test::synthetic_summaries());
+  const Table t = series_table(test::synthetic_summaries(), 0.5, 2.1);
   std::size_t p = 0, c = 0, method = 0;
   for (std::size_t i = 0; i < t.columns.size(); ++i) {
     if (t.columns[i].name == "p") p = i;
@@ -199,7 +199,7 @@ TEST(ReportCharts, RejectedFitIsFadedAndLabelled) {
 }
 
 TEST(ReportTables, SeriesTableHasFitQualityAndNotes) {
-  const Table t = series_table(test::synthetic_summaries());
+  const Table t = series_table(test::synthetic_summaries(), 0.5, 2.1);
   ASSERT_EQ(t.rows.size(), 3u);
   auto col = [&](const std::string& name) {
     for (std::size_t i = 0; i < t.columns.size(); ++i) {
@@ -241,12 +241,20 @@ TEST(ReportTables, FailuresListEveryUnusableGridWithItsReason) {
 }
 
 TEST(ReportTables, GciTableComparesWithF0) {
-  const Table t = gci_table(test::synthetic_summaries());
+  const Table t = gci_table(test::synthetic_summaries(), 0.5, 2.1);
   // A and B: 4 grids → 2 triplets each; C: 3 grids → 1 triplet.
   ASSERT_EQ(t.rows.size(), 5u);
   // A's second triplet: φ_ext = 1000 + 100 → (φ_ext − f0)/f0 = 0.1.
-  EXPECT_DOUBLE_EQ(std::stod(t.rows[1][10].exact), 0.1);
-  EXPECT_EQ(t.rows[4][10].exact, "");  // C has no f0
+  EXPECT_DOUBLE_EQ(std::stod(t.rows[1][11].exact), 0.1);
+  EXPECT_EQ(t.rows[4][11].exact, "");  // C has no f0
+  // The usable column applies the stability section's rule to each row.
+  ASSERT_EQ(t.columns[9].name, "usable");
+  for (const auto& row : t.rows) {
+    const std::string& use = row[9].exact;
+    EXPECT_TRUE(use == "usable" || use == "divergent" || use == "oscillatory" || use == "no p" ||
+                use.rfind("p outside [0.5, 2.1]", 0) == 0)
+        << use;
+  }
 }
 
 // The verdict line prints f0 without ± and the finest grid as f₁ ± U₁: U₁ is
@@ -262,6 +270,22 @@ TEST(ReportTables, VerdictHeadlineGivesUOnlyWithTheFinestGrid) {
   EXPECT_NE(h.find("finest grid Δ* = 0.5: f₁ = 1004.0 ± 5.5 (U₁, RDE"), std::string::npos) << h;
   EXPECT_EQ(h.find("f0 = 1000.0 ±"), std::string::npos) << h;
   EXPECT_EQ(items[2].headline, "no extrapolated value");
+}
+
+// No column mixes notations: one cell in exponent form puts the column's
+// other plain numbers in it (their digits kept); other columns and cells
+// with more than a number stay as they are.
+TEST(ReportTables, ANumericColumnHasOneNotation) {
+  Table t;
+  t.columns = {Column{"c", "", false, true}, Column{"d", "", false, true}, Column{"e", "", false, true}};
+  t.rows = {{number_cell(1.2e-5, 3), number_cell(0.5, 3), text_cell("1017.0 ± 1.5")},
+            {number_cell(0.000109, 3), number_cell(12.25, 4), text_cell("1.5e-06")},
+            {number_cell(8, 3), text_cell(""), text_cell("n/a")}};
+  const std::string md = to_markdown(t);
+  EXPECT_NE(md.find("| 1.2e-05 | 0.5 | 1017.0 ± 1.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 1.09e-04 | 12.25 | 1.5e-06 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 8e+00 |  | n/a |"), std::string::npos) << md;
+  EXPECT_NE(to_html(t).find("<td class=\"num\">1.09e-04</td>"), std::string::npos);
 }
 
 }  // namespace

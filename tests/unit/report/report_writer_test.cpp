@@ -176,10 +176,10 @@ TEST_F(ReportWriter, HtmlIsSelfContainedAndWellFormed) {
   for (const char* external : {"src=\"http", "href=\"http", "<link", "<script", "@import", "url(http"}) {
     EXPECT_EQ(html.find(external), std::string::npos) << external;
   }
-  // Every chart inline, and the stability map (stability_map.svg, not a chart).
-  EXPECT_EQ(test::count_of(html, "<svg"), static_cast<int>(files_.svg.size()) + 1);
+  // Every chart inline twice (wide and narrow), and the stability map (stability_map.svg, not a chart).
+  EXPECT_EQ(test::count_of(html, "<svg"), 2 * static_cast<int>(files_.svg.size()) + 1);
   EXPECT_NE(html.find("<title>Grid-convergence report: synthetic &lt;study&gt;</title>"), std::string::npos);
-  EXPECT_NE(html.find("insufficient grids (3 converged, 4 needed)"), std::string::npos);
+  EXPECT_NE(html.find("insufficient grids (3 solved, 4 needed)"), std::string::npos);
   EXPECT_NE(html.find("(incomplete)"), std::string::npos);
   EXPECT_NE(html.find("residual grew by 1e6"), std::string::npos);
 }
@@ -204,7 +204,7 @@ TEST_F(ReportWriter, MarkdownLinksEveryChartAndTable) {
     EXPECT_NE(md.find("](" + csv.filename().string() + ")"), std::string::npos) << csv;
   }
   EXPECT_NE(md.find("| PC1 superbee fwhm6 bvk |"), std::string::npos);
-  EXPECT_NE(md.find("40%"), std::string::npos);  // the drag difference, shown in percent
+  EXPECT_NE(md.find("40.0%"), std::string::npos);  // the drag difference, in percent to 3 digits
 }
 
 TEST_F(ReportWriter, StaleSeriesChartsAreRemovedOtherFilesKept) {

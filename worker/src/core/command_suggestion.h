@@ -32,7 +32,9 @@ bool report_unknown_command(App& app, int argc, char** argv) {
   std::vector<std::string> names;
   for (const auto* sub : app.get_subcommands([](const auto*) { return true; })) names.push_back(sub->get_name());
   if (std::find(names.begin(), names.end(), argv[1]) != names.end()) return false;
-  std::cerr << "error: " << unknown_command_message(argv[1], names) << "\nRun with --help for more information.\n";
+  const std::string program = app.get_name().empty() ? std::string("the program") : app.get_name();
+  std::cerr << "error: " << unknown_command_message(argv[1], names) << "\nrun '" << program
+            << " --help' for the commands\n";
   return true;
 }
 

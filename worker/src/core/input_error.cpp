@@ -18,4 +18,16 @@ InputError::InputError(std::vector<Problem> problems)
 InputError::InputError(std::string where, std::string reason)
     : InputError(std::vector<Problem>{{std::move(where), std::move(reason)}}) {}
 
+std::string error_lines(const InputError& e) {
+  const std::string text = e.what();
+  std::string out;
+  for (std::size_t at = 0; at < text.size();) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    if (end > at) out += "error: " + text.substr(at, end - at) + "\n";
+    at = end + 1;
+  }
+  return out;
+}
+
 }  // namespace gridfree

@@ -32,6 +32,10 @@ class InputError : public std::runtime_error {
 // "where: reason" lines, one per problem.
 std::string format_problems(const std::vector<Problem>& problems);
 
+// The same lines each starting "error: ", as both executables print an
+// InputError (docs/INTERFACE.md "Error messages").
+std::string error_lines(const InputError& e);
+
 // Collects problems; throws one InputError at the end if any were found.
 class ProblemList {
  public:
