@@ -163,7 +163,7 @@ Table series_table(const std::vector<SeriesSummary>& series, double p_low, doubl
     row.push_back(text_cell(s.verdict));
     std::string concern_text;
     if (concern_of[i])
-      for (const auto& t : concern_of[i]->concerns) concern_text += (concern_text.empty() ? "" : "; ") + t;
+      for (const auto& c : concern_of[i]->concerns) concern_text += (concern_text.empty() ? "" : "; ") + c;
     row.push_back(text_cell(concern_of[i] ? "yes" : "no"));
     row.push_back(text_cell(concern_text));
     add_factor_cells(row, s.series);

@@ -81,7 +81,7 @@ TEST(RunTimeoutResume, ATimedOutJobResumesFromItsCheckpointWithoutSpendingAnAtte
   // Reference: the same study, uninterrupted (no timeout).
   const fs::path ref_dir = gridfree::test_support::fresh_scratch_dir("run_timeout_resume_cli", "reference");
   write_study(ref_dir);
-  const CommandRun ref_run = run(ref_dir, "0");
+  const CommandRun ref_run = run(ref_dir, "none");
   ASSERT_EQ(ref_run.exit_code, 0) << ref_run.err;
   const nlohmann::json ref = stored_result(ref_dir / "g.sqlite");
   ASSERT_TRUE(ref.is_object()) << ref_run.err;
