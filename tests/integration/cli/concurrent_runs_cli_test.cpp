@@ -20,6 +20,7 @@
 #include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
+#include "test_files.h"
 #include "wait_until.h"
 
 namespace {
@@ -42,23 +43,6 @@ fs::path write_twin_study(const fs::path& dir) {
   return file;
 }
 
-// Waits for `pid` (at most `limit_s`); its exit code, -1 when it did not end
-// normally in time.
-int exit_code_of(pid_t pid, double limit_s) {
-  int status = 0;
-  if (!ts::wait_until([&] { return waitpid(pid, &status, WNOHANG) == pid; }, limit_s)) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
-    return -1;
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(ConcurrentRuns, TwoRunsOfOneStudyBothFinishAndSolveEachJobOnce) {
   const auto dir = ts::fresh_scratch_dir("concurrent_runs", "two_runs");
   const auto study = write_twin_study(dir);
@@ -68,17 +52,17 @@ TEST(ConcurrentRuns, TwoRunsOfOneStudyBothFinishAndSolveEachJobOnce) {
   // study's submission race as well.
   const pid_t a = ts::spawn_gridfree_in(dir, args, "0.1", "a.log");
   const pid_t b = ts::spawn_gridfree_in(dir, args, "0.1", "b.log");
-  const int code_a = exit_code_of(a, 120);
-  const int code_b = exit_code_of(b, 120);
-  EXPECT_EQ(code_a, 0) << text_of(dir / "a.log");
-  EXPECT_EQ(code_b, 0) << text_of(dir / "b.log");
+  const int code_a = ts::exit_code_within(a, 120);
+  const int code_b = ts::exit_code_within(b, 120);
+  EXPECT_EQ(code_a, 0) << ts::slurp(dir / "a.log");
+  EXPECT_EQ(code_b, 0) << ts::slurp(dir / "b.log");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*), COUNT(DISTINCT job_id) FROM results"), "20|20");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*) FROM jobs"), "20");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT SUM(attempts) FROM jobs"), "20");  // none solved twice
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*) FROM studies"), "1");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT status FROM studies"), "done");
   EXPECT_EQ(ts::sqlite_query(db, "PRAGMA integrity_check"), "ok");
-  for (const auto* log : {"a.log", "b.log"}) EXPECT_EQ(text_of(dir / log).find("internal"), std::string::npos);
+  for (const auto* log : {"a.log", "b.log"}) EXPECT_EQ(ts::slurp(dir / log).find("internal"), std::string::npos);
 }
 
 TEST(ConcurrentRuns, ARunBesideADaemonFinishesAndTheDaemonKeepsServing) {
@@ -89,7 +73,7 @@ TEST(ConcurrentRuns, ARunBesideADaemonFinishesAndTheDaemonKeepsServing) {
   const pid_t daemon = ts::spawn_gridfree_in(dir, "daemon -j 2 --db g.sqlite", "0.1", "daemon.log");
   const pid_t run = ts::spawn_gridfree_in(dir, "run " + ts::shell_quote(study.string()) + " -j 2 --db g.sqlite",
                                           "0.1", "run.log");
-  EXPECT_EQ(exit_code_of(run, 120), 0) << text_of(dir / "run.log");
+  EXPECT_EQ(ts::exit_code_within(run, 120), 0) << ts::slurp(dir / "run.log");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*), COUNT(DISTINCT job_id) FROM results"), "20|20");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT SUM(attempts) FROM jobs"), "20");
   // The daemon is still serving: a study submitted now is worked by it.
@@ -103,9 +87,9 @@ TEST(ConcurrentRuns, ARunBesideADaemonFinishesAndTheDaemonKeepsServing) {
   ASSERT_EQ(ts::gridfree_in(dir, "submit after.json --db g.sqlite").exit_code, 0);
   EXPECT_TRUE(ts::wait_until(
       [&] { return ts::sqlite_query(db, "SELECT status FROM studies WHERE name = 'after'") == "done"; }, 60))
-      << text_of(dir / "daemon.log");
+      << ts::slurp(dir / "daemon.log");
   kill(daemon, SIGTERM);
-  EXPECT_EQ(exit_code_of(daemon, 30), 0) << text_of(dir / "daemon.log");
+  EXPECT_EQ(ts::exit_code_within(daemon, 30), 0) << ts::slurp(dir / "daemon.log");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*), COUNT(DISTINCT job_id) FROM results"), "23|23");
   EXPECT_EQ(ts::sqlite_query(db, "PRAGMA integrity_check"), "ok");
 }

@@ -26,6 +26,7 @@
 #include "quickstart_study.h"
 #include "run_command.h"
 #include "scratch_dir.h"
+#include "test_files.h"
 #include "wait_until.h"
 
 namespace {
@@ -36,21 +37,6 @@ namespace ts = gridfree::test_support;
 int start_rounds() {
   const char* env = std::getenv("GRIDFREE_TEST_START_ROUNDS");
   return env != nullptr && std::atoi(env) > 0 ? std::atoi(env) : 3;
-}
-
-int exit_code_within(pid_t pid, double limit_s) {
-  int status = 0;
-  if (!ts::wait_until([&] { return waitpid(pid, &status, WNOHANG) == pid; }, limit_s)) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
-    return -1;
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string log_text(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // Another study over the ok case: Δ* 5 (first's job too), 3.6 and 2.8.
@@ -78,8 +64,8 @@ TEST(ConcurrentStart, EightRunsOnANewDatabaseAllSucceed) {
     }
     for (int i = 0; i < kProcesses; ++i) {
       const std::string log = "p" + std::to_string(i) + ".log";
-      EXPECT_EQ(exit_code_within(pids[static_cast<std::size_t>(i)], 180), 0) << log_text(dir / log);
-      EXPECT_EQ(log_text(dir / log).find("internal"), std::string::npos) << log_text(dir / log);
+      EXPECT_EQ(ts::exit_code_within(pids[static_cast<std::size_t>(i)], 180), 0) << ts::slurp(dir / log);
+      EXPECT_EQ(ts::slurp(dir / log).find("internal"), std::string::npos) << ts::slurp(dir / log);
     }
     const auto db = dir / "g.sqlite";
     EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*) FROM studies WHERE status = 'done'"), "2");

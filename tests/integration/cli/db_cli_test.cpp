@@ -46,16 +46,6 @@ fs::path checked_run(const fs::path& dir) {
   return dir / "g.sqlite";
 }
 
-int wait_exit(pid_t pid, double limit_s) {
-  int status = 0;
-  if (!ts::wait_until([&] { return waitpid(pid, &status, WNOHANG) == pid; }, limit_s)) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
-    return -1;
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 std::set<std::string> lines_of(const std::string& text) {
   std::set<std::string> out;
   std::istringstream in(text);
@@ -122,7 +112,7 @@ TEST(DbCommands, ABackupTakenWhileADaemonWritesRestoresAndResumes) {
   const auto backup = ts::gridfree_in(dir, "db backup copy.sqlite --db g.sqlite");
   const int results_after = ts::sqlite_int(db, "SELECT COUNT(*) FROM results");
   kill(daemon, SIGTERM);
-  EXPECT_EQ(wait_exit(daemon, 60), 0);
+  EXPECT_EQ(ts::exit_code_within(daemon, 60), 0);
   ASSERT_EQ(backup.exit_code, 0) << backup.out << backup.err;
   EXPECT_NE(backup.out.find("backed up g.sqlite to copy.sqlite"), std::string::npos) << backup.out;
   EXPECT_FALSE(fs::exists(dir / "copy.sqlite-wal"));  // one file: restores with cp
