@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /* A worker that answers at once, for bench/orchestrator_scale.sh: the
  * converged result of tests/fixtures/fake_worker.sh's "ok" mode
  * (dp_star = 1159 + Δ*, Δ* = (Lx Ly Lz / N)^(1/3) from the job's

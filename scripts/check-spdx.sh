@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Lists every tracked source file that lacks an SPDX-License-Identifier line in
 # its first three lines; exits 1 if there is one. `--add` inserts the line
-# (after a shebang) instead. Source: C++ (.cpp .h .cpp.in), shell, Python,
+# (after a shebang) instead. Source: C and C++ (.c .cc .cpp .h .hpp .cpp.in), shell, Python,
 # CMake, Makefiles and LAMMPS inputs; data, documents and OpenFOAM case
 # dictionaries are not source (THIRD_PARTY.md says what they are under).
 set -euo pipefail
@@ -16,7 +16,7 @@ mode="${1:-check}"
 missing=0
 while IFS= read -r f; do
   case "$f" in
-    *.cpp|*.h|*.cpp.in|*.hpp) comment="//" ;;
+    *.c|*.cc|*.cpp|*.h|*.hpp|*.cpp.in) comment="//" ;;
     *.sh|*.py|*.cmake|*/CMakeLists.txt|CMakeLists.txt|Makefile|*.in|.ci/*) comment="#" ;;
     *) continue ;;
   esac
