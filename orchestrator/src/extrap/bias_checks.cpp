@@ -118,12 +118,7 @@ void demote_for_bias(const std::vector<std::string>& failed, const std::vector<d
     v.reasons.insert(v.reasons.empty() ? v.reasons.end() : v.reasons.end() - 1, failed.begin(), failed.end());
     return;
   }
-  v.value = "pre-asymptotic";
-  v.reasons = failed;
-  const double r = mean_refinement_ratio(h);
-  v.next_h = h.front() / r;
-  v.reasons.push_back("add the next finer grid Δ* = " + g4_bias(*v.next_h) + " (the series' mean refinement ratio " +
-                      g4_bias(r) + ")");
+  demote_to_pre_asymptotic(failed, h, v);
 }
 
 nlohmann::ordered_json to_ordered_json(const BiasCheck& b) {

@@ -86,13 +86,7 @@ bool CoverageCheck::flagged() const { return below_promise() || bias_failed(); }
 
 void demote_if_flagged(const CoverageCheck& check, const std::vector<double>& h, Verdict& v) {
   if (v.value != "converged" || !check.flagged()) return;
-  v.value = "pre-asymptotic";
-  const double r = mean_refinement_ratio(h);
-  v.next_h = h.front() / r;
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "add the next finer grid Δ* = %.4g (the series' mean refinement ratio %.4g)",
-                *v.next_h, r);
-  v.reasons = {"the coverage self-check flags the series: " + check.summary(), buf};
+  demote_to_pre_asymptotic({"the coverage self-check flags the series: " + check.summary()}, h, v);
 }
 
 WindowFit window_fit(const ExtrapolationResult& r) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "extrap/value_format.h"
 
@@ -82,6 +83,14 @@ Verdict verdict_without_fit(int n_grids, const std::string& why) {
     v.reasons.push_back(why);
   }
   return v;
+}
+
+void demote_to_pre_asymptotic(std::vector<std::string> why, const std::vector<double>& h, Verdict& v) {
+  v.value = "pre-asymptotic";
+  const double r = mean_refinement_ratio(h);
+  v.next_h = h.front() / r;
+  why.push_back(next_grid_advice(v, r));
+  v.reasons = std::move(why);
 }
 
 Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, const VerdictRules& rules) {

@@ -38,6 +38,10 @@ struct VerdictRules {
 // Mean refinement ratio (h_max/h_min)^(1/(n−1)) of h ascending, n ≥ 2.
 double mean_refinement_ratio(const std::vector<double>& h);
 
+// `v` made `pre-asymptotic` for `why` (h ascending, n ≥ 2): its reasons
+// become `why` followed by the advice to add the next finer grid, h_1/r.
+void demote_to_pre_asymptotic(std::vector<std::string> why, const std::vector<double>& h, Verdict& v);
+
 // The verdict of an extrapolation made with `opts` (only p_low, p_high are used).
 Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts,
               const VerdictRules& rules = {});
