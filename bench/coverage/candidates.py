@@ -177,6 +177,102 @@ def combined_with(average):
     return combined
 
 
+def power_fit_f0(h, f, exponents):
+    """f0 of the least-squares fit f = f0 + c h^p (unweighted), p the member of
+    exponents with the smallest residual: a grid search over p with the
+    linear fit in (f0, c) solved exactly at each."""
+    n, best = len(h), None
+    for p in exponents:
+        x = [v ** p for v in h]
+        sx, sxx = sum(x), sum(v * v for v in x)
+        sf, sxf = sum(f), sum(a * b for a, b in zip(x, f))
+        det = n * sxx - sx * sx
+        c = (n * sxf - sx * sf) / det
+        f0 = (sf - c * sx) / n
+        ssr = sum((fi - f0 - c * xi) ** 2 for fi, xi in zip(f, x))
+        if best is None or ssr < best[0]:
+            best = (ssr, f0)
+    return best[1]
+
+
+BOOT_EXPONENTS = [0.5 + 0.05 * k for k in range(33)]  # 0.5 … 2.1, the capped fit's range
+
+
+def bootstrap_with(replicates=400, level=0.95, seed=20261207, pairs=False):
+    """Residual bootstrap of the least-squares power-law fit (Efron &
+    Tibshirani 1993, ch. 9: resample the fit's residuals, rescaled by
+    √(n/(n − 3)) for the three fitted parameters, add them to the fitted
+    values, refit with p free in [0.5, 2.1]); the percentile interval
+    [q_lo, q_hi] of the replicates' f0 at the given level.
+    f0 ± U₀ = the interval about the capped f0 (U₀ = its farther end);
+    f₁ ± U₁ holds it (U₁ = max |q − f₁|). Verdict: the capped method's.
+    Fitted values and residuals are the capped fit's (`fhat` per grid).
+    With pairs: resample the (h, f) pairs themselves instead (a draw with
+    fewer than three distinct grids is drawn again)."""
+    import random
+
+    def run(runner, h, f, order):
+        r = runner(h, f, "--method", "capped", "--no-leave-one-out")
+        w = summary(r)
+        if w is None:
+            return None
+        fitted = {g["h"]: g.get("fhat") for g in r["grids"]}
+        if any(fitted.get(v) is None for v in h):
+            return w
+        fhat = [fitted[v] for v in h]
+        n = len(h)
+        scale = (n / (n - 3)) ** 0.5 if n > 3 else 1.0
+        res = [scale * (fi - gi) for fi, gi in zip(f, fhat)]
+        rng = random.Random(seed)
+
+        def draw():
+            if not pairs:
+                return power_fit_f0(h, [g + rng.choice(res) for g in fhat], BOOT_EXPONENTS)
+            while True:
+                pick = [rng.randrange(n) for _ in range(n)]
+                if len(set(pick)) >= 3:
+                    return power_fit_f0([h[i] for i in pick], [f[i] for i in pick], BOOT_EXPONENTS)
+        f0s = sorted(draw() for _ in range(replicates))
+        lo = f0s[int((1 - level) / 2 * (replicates - 1))]
+        hi = f0s[int((1 + level) / 2 * (replicates - 1))]
+        out = dict(w)
+        out["u0"] = max(abs(lo - w["f0"]), abs(hi - w["f0"]))
+        out["u1"] = max(abs(lo - w["f1"]), abs(hi - w["f1"]))
+        return out
+    return run
+
+
+def widest_of(*estimators):
+    """The widest of several estimators' intervals, the first one's verdict."""
+    def run(runner, h, f, order):
+        parts = [e(runner, h, f, order) for e in estimators]
+        if any(part is None for part in parts):
+            return None
+        out = dict(parts[0])
+        out["u1"] = max(part["u1"] for part in parts)
+        u0 = [part["u0"] for part in parts if part.get("u0") is not None]
+        out["u0"] = max(u0) if u0 else None
+        return out
+    return run
+
+
+def data_range_floor(estimator, factor, per_interval=False):
+    """An `unreliable` window's U no smaller than factor · Δ_M, the largest
+    difference between its grids' values: the fallback Eça & Hoekstra (2014)
+    use when the data admit no fit (there with factor 3)."""
+    def run(runner, h, f, order):
+        w = estimator(runner, h, f, order)
+        if w is None or w["verdict"] != "unreliable":
+            return w
+        out = dict(w)
+        dm = (max(f) - min(f)) / ((len(f) - 1) if per_interval else 1)
+        out["u1"] = max(w["u1"], factor * dm)
+        if w.get("u0") is not None:
+            out["u0"] = max(w["u0"], factor * dm)
+        return out
+    return run
+
+
 ESTIMATORS = {
     # the library as it is (leave-one-out test on, no order declared)
     "averaged": library("averaged"),
@@ -199,4 +295,13 @@ ESTIMATORS = {
     "combined": combined_with(model_average),
     "combined-3": combined_with(model_average_with(3.0)),
     "combined-a0.3": combined_with(model_average_with(None, 0.3)),
+    "averaged+dm1": data_range_floor(library("averaged"), 1.0),
+    "averaged+order+dm1": data_range_floor(library("averaged", with_order=True), 1.0),
+    "averaged+order+dm3": data_range_floor(library("averaged", with_order=True), 3.0),
+    "averaged+dphi3": data_range_floor(library("averaged"), 3.0, per_interval=True),
+    "averaged+order+dphi3": data_range_floor(library("averaged", with_order=True), 3.0, per_interval=True),
+    "bootstrap": bootstrap_with(),
+    "bootstrap-pairs": bootstrap_with(pairs=True),
+    "averaged+bootstrap": widest_of(library("averaged"), bootstrap_with()),
+    "averaged+order+bootstrap": widest_of(library("averaged", with_order=True), bootstrap_with()),
 }
