@@ -38,13 +38,15 @@ def summary(r):
             "u1": r["grids"][0]["u"], "p": r.get("p"), "sigma": r.get("sigma_re") or 0.0}
 
 
-def library(method, with_order=False, leave_one_out=True):
+def library(method, with_order=False, leave_one_out=True, range_floor=True):
     def run(runner, h, f, order):
         opts = ["--method", method]
         if with_order and order:
             opts += ["--order", str(order)]
         if not leave_one_out:
             opts.append("--no-leave-one-out")
+        if not range_floor:
+            opts.append("--no-range-floor")
         return summary(runner(h, f, *opts))
     return run
 
@@ -295,13 +297,16 @@ ESTIMATORS = {
     "combined": combined_with(model_average),
     "combined-3": combined_with(model_average_with(3.0)),
     "combined-a0.3": combined_with(model_average_with(None, 0.3)),
-    "averaged+dm1": data_range_floor(library("averaged"), 1.0),
-    "averaged+order+dm1": data_range_floor(library("averaged", with_order=True), 1.0),
-    "averaged+order+dm3": data_range_floor(library("averaged", with_order=True), 3.0),
-    "averaged+dphi3": data_range_floor(library("averaged"), 3.0, per_interval=True),
-    "averaged+order+dphi3": data_range_floor(library("averaged", with_order=True), 3.0, per_interval=True),
+    # averaged before its floor on unreliable windows (2026-12-07), and floors tried
+    "averaged-before-floor": library("averaged", range_floor=False),
+    "averaged+order-before-floor": library("averaged", with_order=True, range_floor=False),
+    "averaged+order+dm1": data_range_floor(library("averaged", with_order=True, range_floor=False), 1.0),
+    "averaged+order+dm3": data_range_floor(library("averaged", with_order=True, range_floor=False), 3.0),
+    "averaged+order+dphi3": data_range_floor(library("averaged", with_order=True, range_floor=False), 3.0,
+                                             per_interval=True),
     "bootstrap": bootstrap_with(),
     "bootstrap-pairs": bootstrap_with(pairs=True),
-    "averaged+bootstrap": widest_of(library("averaged"), bootstrap_with()),
-    "averaged+order+bootstrap": widest_of(library("averaged", with_order=True), bootstrap_with()),
+    "averaged+bootstrap": widest_of(library("averaged", range_floor=False), bootstrap_with()),
+    "averaged+order+bootstrap": widest_of(library("averaged", with_order=True, range_floor=False),
+                                          bootstrap_with()),
 }

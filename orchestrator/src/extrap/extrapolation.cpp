@@ -120,7 +120,8 @@ ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opt
   const std::vector<std::string> failed = apply_bias_checks(s, opts, refit, out);
   out.verdict = judge(out, opts);
   demote_for_bias(failed, s.h, out.verdict);
-  if (opts.method == ExtrapolationMethod::kAveraged && out.verdict.value == "unreliable")
+  if (opts.method == ExtrapolationMethod::kAveraged && opts.unreliable_range_floor &&
+      out.verdict.value == "unreliable")
     floor_unreliable_to_data_range(s, out);
   const std::string record = measured_coverage_sentence(opts.method, opts.expected_order.has_value(),
                                                         out.verdict.value);
