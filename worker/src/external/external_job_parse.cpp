@@ -192,8 +192,8 @@ ExternalJob parse_external_job(const nlohmann::json& doc, const std::filesystem:
     job.name = doc.at("case").at("name").get<std::string>();
   const auto& ext = doc.at("case").at("external");
   if (!ext.is_object()) throw InputError(kExt, "must be an object");
-  static const char* kKnown[] = {"template_dir", "template_sha256", "render", "variables", "setup",
-                                 "command",      "version",         "collect"};
+  static const char* kKnown[] = {"template_dir", "template_sha256", "render",  "variables", "levels",
+                                 "setup",        "command",         "version", "collect"};
   for (const auto& [key, value] : ext.items()) {
     (void)value;
     if (std::find(std::begin(kKnown), std::end(kKnown), key) == std::end(kKnown))
@@ -227,6 +227,19 @@ ExternalJob parse_external_job(const nlohmann::json& doc, const std::filesystem:
         if (!is_identifier(name)) problems.add(w, "a variable name is letters, digits and _, not starting with a digit");
         else if (!value.is_number() || !std::isfinite(value.get<double>())) problems.add(w, "must be a finite number");
         else job.variables.emplace_back(name, value.get<double>());
+      }
+  }
+  if (ext.contains("levels")) {
+    const auto& levels = ext.at("levels");
+    if (!levels.is_object()) problems.add(kExt + "/levels", "must be an object: factor name → level (text)");
+    else
+      for (const auto& [name, value] : levels.items()) {
+        const std::string w = kExt + "/levels/" + name;
+        if (!is_identifier(name)) problems.add(w, "a factor name is letters, digits and _, not starting with a digit");
+        else if (!value.is_string()) problems.add(w, "must be a string (the level's text)");
+        else if (std::any_of(job.variables.begin(), job.variables.end(), [&](const auto& v) { return v.first == name; }))
+          problems.add(w, "'" + name + "' is also a variable; a placeholder has one value");
+        else job.levels.emplace_back(name, value.get<std::string>());
       }
   }
   job.setup = ext_string_list(ext, "setup", kExt, problems);
