@@ -10,7 +10,8 @@
 // scheme and the ensemble budget, and a rerun reuses every job. Also: the
 // shipped cavity study (no factors) keeps the job hashes it had before
 // factors existed. OpenFOAM must be installed (scripts/install-deps.sh
-// test installs it): without it these tests fail.
+// test installs it): without it these tests fail. Adaptive grids with a
+// factor refine each configuration's own ladder.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -136,6 +137,34 @@ TEST_F(OpenFoamFactors, SchemeFactorAndDiffusivityEnsembleEndToEnd) {
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(line_count(dir / "starts.txt"), 30u) << "the rerun ran jobs again";
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*) FROM jobs"), "30");
+}
+
+// Adaptive grids with a factor: each configuration refines its own ladder
+// (N = 40 → 1280, ratio 2) to the target RDE 0.5 %, its new grids carrying
+// its level. Measured: linear (p ≈ 2) meets it at N = 640 (RDE 0.17 %),
+// upwind (p ≈ 0.8) does not by N = 1280 (RDE 1.0 %).
+TEST_F(OpenFoamFactors, AdaptiveGridsRefineEachConfigurationsOwnLadder) {
+  const auto dir = ts::fresh_scratch_dir("external_openfoam_factors", "adaptive");
+  fs::copy(ts::kSourceDir / "studies/external", dir / "external", fs::copy_options::recursive);
+  std::ifstream in(ts::kSourceDir / "studies/external_scalar_transport.json");
+  json doc = json::parse(in);
+  doc["cases"].erase("pe10_dt_plus");
+  doc["cases"].erase("pe10_dt_minus");
+  doc.erase("ensembles");
+  doc["grids"] = json::parse(R"({"target_rde": 0.005, "ratio": 2, "variables": {"N": {"coarsest": 40, "finest": 1280}}})");
+  std::ofstream(dir / "study.json") << doc.dump(2);
+  const auto run = run_gridfree(dir, "run study.json -j 2 --db g.sqlite");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto db = dir / "g.sqlite";
+  EXPECT_EQ(ts::sqlite_query(db, "SELECT json_extract(levels, '$.scheme') || ' ' || adaptive_status || ' ' || "
+                                 "(SELECT COUNT(*) FROM study_jobs sj WHERE sj.series_id = series.id) FROM series "
+                                 "ORDER BY id"),
+            "Gauss upwind target_not_reached 6\nGauss linear target_met 5");
+  // Every job of a series, the ladder's new ones included, has the series' level.
+  EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*) FROM study_jobs sj JOIN series se ON se.id = sj.series_id JOIN jobs j "
+                                 "ON j.id = sj.job_id WHERE json_extract(j.spec_json, '$.case.external.levels.scheme') "
+                                 "<> json_extract(se.levels, '$.scheme')"),
+            "0");
 }
 
 // Job hashes of studies/external_cavity.json on main before factors existed
