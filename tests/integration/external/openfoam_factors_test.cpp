@@ -127,9 +127,16 @@ TEST_F(OpenFoamFactors, SchemeFactorAndDiffusivityEnsembleEndToEnd) {
        at = differences.find("\nscheme,Gauss upwind,Gauss linear,", at + 1))
     ++scheme_rows;
   EXPECT_EQ(scheme_rows, 3u) << differences;
+  // series.csv names the case, the quantity, a column per factor and the levels, no particle-bed column.
+  const std::string series_csv = file_text(report / "series.csv");
+  const std::string header = series_csv.substr(0, series_csv.find('\n'));
+  EXPECT_NE(header.find(",case,quantity,scheme,levels,"), std::string::npos) << header;
+  EXPECT_EQ(header.find("fwhm_dp"), std::string::npos) << header;
+  EXPECT_NE(series_csv.find(",pe10,T_mean,Gauss linear,"), std::string::npos) << series_csv;
   const std::string budget = file_text(report / "budget.csv");
   EXPECT_NE(budget.find("diffusivity: scheme=Gauss linear T_mean"), std::string::npos) << budget;
   EXPECT_NE(budget.find("scheme Gauss upwind vs Gauss linear"), std::string::npos) << budget;
+  EXPECT_NE(file_text(report / "report.md").find("differing only in one of the study's factors"), std::string::npos);
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(DISTINCT levels) || ' ' || MIN(instances) FROM v_ensemble_budget"),
             "2 3");
   // A rerun reuses every job.
