@@ -128,10 +128,11 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     const auto& k = expanded.series[i];
     ins_series.reset();
     // An external series has no particle-bed factors: NULL, not "" or 0 (docs/DATABASE.md).
-    const auto bed_text = [&](const std::string& v) { return k.external() ? std::nullopt : std::optional(v); };
-    const std::optional<double> fwhm = k.external() ? std::nullopt : std::optional(k.fwhm_dp);
-    ins_series.bind_all(out.study_id, static_cast<long long>(i), k.case_name, bed_text(k.convection), fwhm,
-                        bed_text(k.drag), bed_text(k.deposition), k.quantity, levels_json(k.levels)).run();
+    const bool bed = !k.external();
+    const auto bed_only = [&](const auto& v) { return bed ? std::optional(v) : std::nullopt; };
+    ins_series.bind_all(out.study_id, static_cast<long long>(i), k.case_name, bed_only(k.convection),
+                        bed_only(k.fwhm_dp), bed_only(k.drag), bed_only(k.deposition), k.quantity,
+                        levels_json(k.levels)).run();
     series_ids.push_back(db_.last_insert_rowid());
   }
   auto ins_job = db_.prepare(
