@@ -297,6 +297,21 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
       c.variables[it.key()] = it->get<std::string>();
       defined.insert(it.key());
     }
+  // Constants: text placeholders of this case (an ensemble's instance changes one).
+  if (auto k = ext.find("constants"); k != ext.end() && k->is_object())
+    for (auto it = k->begin(); it != k->end(); ++it) {
+      const std::string where = child_pointer(at + "/constants", it.key());
+      if (!valid_external_name(it.key()))
+        problems.add(where, "a constant's name is a letter or '_' followed by letters, digits or '_'");
+      else if (it.key() == kExternalCoresPlaceholder)
+        problems.add(where, "'cores' is the job's number of cores (@@cores@@, the study's cores rule); name the constant otherwise");
+      else if (defined.count(it.key()) != 0)
+        problems.add(where, "'" + it.key() + "' is already a grid or derived variable");
+      else if (!it->is_string() && !(it->is_number() && !it->is_boolean()))
+        problems.add(where, "a constant is a string or a number (written as text for @@" + it.key() + "@@)");
+      else
+        c.constants[it.key()] = it->is_string() ? it->get<std::string>() : it->dump();
+    }
   // Every expression must parse and read only defined names.
   auto check_expression = [&](const std::string& text, const std::string& where) {
     try {
@@ -376,6 +391,7 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
   std::set<std::string> placeholders = defined;
   placeholders.insert(kExternalCoresPlaceholder);
   placeholders.insert(text_placeholders.begin(), text_placeholders.end());
+  for (const auto& [name, text] : c.constants) placeholders.insert(name);
   check_external_render_files(c, placeholders, at, problems);
   if (external_grid_count(grids) > 0) check_external_grids(c, grids, at, problems);
   if (problems.problems().size() != before) return std::nullopt;
@@ -405,6 +421,7 @@ json external_job_document(const ExternalCase& c, const std::string& case_name, 
                    {"command", c.command},
                    {"version", c.version},
                    {"collect", c.collect}};
+  if (!c.constants.empty()) external["constants"] = c.constants;
   if (!levels.empty()) external["levels"] = levels;
   json g = {{"level", level}, {"h", grid.h}};
   if (grid.cells) g["cells"] = *grid.cells;

@@ -39,6 +39,9 @@ struct ExternalCase {
   std::string template_sha256;          // job/template_hash.h, at validation
   std::vector<std::string> render;      // relative to the template
   std::map<std::string, std::string> variables;  // derived name → expression
+  // Case constants: placeholder name → its text (a string verbatim, a number
+  // as JSON writes it), e.g. an instance's snapshot file or seed.
+  std::map<std::string, std::string> constants;
   std::string h_expression;             // h itself, or (volume/(cells))^(1/dim) spelt out
   std::string h_meaning;                // for reports: "h = 1/N" or "h = (V/cells)^(1/2), cells = N^2, V = 1"
   std::string cells_expression;         // "" when not given
@@ -83,7 +86,8 @@ ExternalGrid external_grid(const ExternalCase& c, const GridVariables& grids, st
 // Number of grids (the common length of the variable lists; 0 when none).
 std::size_t external_grid_count(const GridVariables& grids);
 
-// The job document of docs/INTERFACE.md §2 for one grid; `levels` (the
+// The job document of docs/INTERFACE.md §2 for one grid (the case's
+// `constants` in it when it has any); `levels` (the
 // series' factor levels, rendered as text) are in it only when there are
 // any, so a study without factors has the documents it always had.
 nlohmann::json external_job_document(const ExternalCase& c, const std::string& case_name,

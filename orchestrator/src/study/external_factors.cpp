@@ -130,6 +130,11 @@ void check_external_factor_placeholders(const Study& s, ProblemList& problems) {
     }
     for (const auto& c : s.cases) {
       if (!c.external) continue;
+      if (c.external->constants.count(name) != 0) {
+        problems.add_once(at, "'" + name + "' is a constant of case " + c.name +
+                                  " (external/constants); a factor is a placeholder of its own");
+        break;
+      }
       if (c.external->variables.count(name) != 0) {
         problems.add_once(at, "'" + name + "' is a derived variable of case " + c.name +
                                   " (external/variables); a factor is a placeholder of its own");

@@ -50,12 +50,13 @@ TEST(ExternalPrepareCase, AJobsOwnCoresVariableWins) {
   EXPECT_EQ(read_text(dir / "run/case/system/decomposeParDict"), "numberOfSubdomains 6;\nn 64;\n");
 }
 
-// A factor level (docs/EXTERNAL.md "Factors, designs and ensembles") is
-// written as its text, spaces and parentheses included; numbers as before.
+// A factor level and a case constant (docs/EXTERNAL.md "Factors, designs
+// and ensembles") are written as their text, spaces and parentheses
+// included; numbers as before.
 TEST(ExternalPrepareCase, FactorLevelsAreWrittenAsTheirText) {
   const auto dir = test_support::fresh_scratch_dir("prepare_case", "levels");
   std::filesystem::create_directories(dir / "template/system");
-  std::ofstream(dir / "template/system/fvSchemes", std::ios::binary) << "div(phi,T) @@scheme@@;\nn @@N@@;\n";
+  std::ofstream(dir / "template/system/fvSchemes", std::ios::binary) << "div(phi,T) @@scheme@@;\nn @@N@@;\nfile @@snapshot@@;\n";
   const nlohmann::json doc = {
       {"schema", "gridfree/job/1"},
       {"case",
@@ -66,13 +67,15 @@ TEST(ExternalPrepareCase, FactorLevelsAreWrittenAsTheirText) {
           {"render", {"system/fvSchemes"}},
           {"variables", {{"N", 8}}},
           {"levels", {{"scheme", "Gauss linearUpwind grad(T)"}}},
+          {"constants", {{"snapshot", "t2.dat"}}},
           {"command", {"true"}},
           {"version", "1"},
           {"collect", {{"quantities", {{"q", {{"units", "1"}, {"log", "stdout"}, {"regex", "q=(.*)"}}}}}}}}}}}};
   const ExternalJob job = parse_external_job(doc, dir);
-  ASSERT_EQ(job.levels.size(), 1u);
+  ASSERT_EQ(job.levels.size(), 2u);  // the constant and the level
   prepare_external_case(job, dir / "run", 1);
-  EXPECT_EQ(read_text(dir / "run/case/system/fvSchemes"), "div(phi,T) Gauss linearUpwind grad(T);\nn 8;\n");
+  EXPECT_EQ(read_text(dir / "run/case/system/fvSchemes"),
+            "div(phi,T) Gauss linearUpwind grad(T);\nn 8;\nfile t2.dat;\n");
   nlohmann::json bad = doc;
   bad["case"]["external"]["levels"]["N"] = "3";  // a placeholder has one value
   EXPECT_THROW(parse_external_job(bad, dir), InputError);

@@ -179,5 +179,38 @@ TEST(ExternalFactors, EnsembleOfInstancesMadeWithExtends) {
   EXPECT_EQ(distinct_job_count(ex), 48u);
 }
 
+// A case's constants (text placeholders of its own): an instance made with
+// `extends` changes one, e.g. its snapshot file.
+TEST(ExternalFactors, ConstantsAreACasesOwnTextPlaceholders) {
+  const auto dir = factor_study_dir("constants");
+  std::ofstream(dir / "poly/input.txt", std::ios::app) << "snapshot @@snapshot@@\n";
+  json doc = factor_study();
+  doc["cases"]["poly"]["external"]["constants"] = {{"snapshot", "t1.dat"}};
+  doc["cases"]["poly2"] = json::parse(R"({"extends": "poly", "external": {"constants": {"snapshot": "t2.dat"}}})");
+  doc["ensembles"] = json::parse(R"({"snapshots": ["poly", "poly2"]})");
+  const ExpandedStudy ex = expand(parse_study_document(doc, dir));
+  std::set<std::string> texts, hashes;
+  for (const auto& j : ex.jobs) {
+    texts.insert(j.doc["case"]["external"]["constants"]["snapshot"].get<std::string>());
+    hashes.insert(j.hash);
+  }
+  EXPECT_EQ(texts, (std::set<std::string>{"t1.dat", "t2.dat"}));
+  EXPECT_EQ(hashes.size(), 32u);  // 2 instances × 4 configurations × 4 grids
+  json clash = doc;
+  clash["cases"]["poly"]["external"]["constants"]["N"] = 3;
+  auto p = problems_of(clash, dir);
+  EXPECT_TRUE(has_problem(p, "/cases/poly/external/constants/N", "grid or derived variable")) << all_problems(p);
+  json factor = doc;
+  factor["factors"]["snapshot"] = {"a", "b"};
+  p = problems_of(factor, dir);
+  EXPECT_TRUE(has_problem(p, "/factors/snapshot", "constant of case poly")) << all_problems(p);
+  json missing = doc;
+  missing["cases"]["poly"]["external"].erase("constants");
+  missing["cases"].erase("poly2");
+  missing.erase("ensembles");
+  p = problems_of(missing, dir);
+  EXPECT_FALSE(p.empty());  // @@snapshot@@ defined by nothing
+}
+
 }  // namespace external_factors_test
 }  // namespace gridfree

@@ -50,7 +50,9 @@ struct ExternalJob {
   std::string template_sha256;
   std::vector<std::string> render;     // relative paths inside the template
   std::vector<std::pair<std::string, double>> variables;
-  std::vector<std::pair<std::string, std::string>> levels;  // factor levels, rendered as text (docs/EXTERNAL.md)
+  // Text placeholders: the case's constants and the series' factor levels,
+  // written verbatim (docs/EXTERNAL.md "Factors, designs and ensembles").
+  std::vector<std::pair<std::string, std::string>> levels;
   std::vector<std::string> setup;
   std::vector<std::string> command;    // argv
   std::string version;
