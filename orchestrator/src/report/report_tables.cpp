@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 #include "extrap/verdict.h"
 #include "extrap/value_format.h"
@@ -26,15 +27,56 @@ Column num_col(std::string name, std::string title = {}, bool csv_only = false) 
   return {std::move(name), std::move(title), csv_only, true};
 }
 
-// Factor columns present in the CSV of the grids and series tables.
-void add_factor_columns(std::vector<Column>& columns) {
+bool all_external(const std::vector<SeriesSummary>& series);
+
+// The study's own factor names of external series (docs/EXTERNAL.md
+// "Factors, designs and ensembles"), in name order.
+// A factor named like a column of the grids or series table has no column
+// of its own (its level is in `levels`).
+std::vector<std::string> external_factor_names(const std::vector<SeriesSummary>& series) {
+  static const std::set<std::string> kTaken = {
+      "series", "f0", "verdict", "attention", "concerns", "case", "quantity", "levels", "status", "grids", "ng",
+      "failed", "pending", "method", "u0", "p", "c", "c1", "c2", "f0_power", "p_power", "p_found", "f0_mixed",
+      "sigma_re", "data_range", "sigma_re_over_rf", "good_fit", "fs", "verdict_reasons", "note",
+      "extrapolation_notes", "job_hash", "h", "delta_star", "nx", "ny", "nz", "cells", "value", "dp_star", "fhat",
+      "u", "rde", "error_vs_f0", "iterations", "wall_s", "cpu_s", "peak_rss_mb", "reason"};
+  std::set<std::string> names;
+  for (const auto& s : series)
+    for (const auto& [name, level] : s.series.levels)
+      if (kTaken.count(name) == 0) names.insert(name);
+  return {names.begin(), names.end()};
+}
+
+// Factor columns present in the CSV of the grids and series tables: the
+// particle bed's, or an external study's case, quantity, one column per
+// factor and the levels as JSON (the database's `levels`).
+void add_factor_columns(std::vector<Column>& columns, const std::vector<std::string>& factor_names, bool external) {
+  if (external) {
+    columns.push_back(text_col("case", {}, true));
+    columns.push_back(text_col("quantity", {}, true));
+    for (const auto& name : factor_names) columns.push_back(text_col(name, {}, true));
+    columns.push_back(text_col("levels", {}, true));
+    return;
+  }
   for (const char* f : {"case", "convection", "fwhm_dp", "drag", "deposition"}) {
     columns.push_back(text_col(f, {}, true));
   }
 }
 
-void add_factor_cells(std::vector<Cell>& row, const SeriesData& s) {
+void add_factor_cells(std::vector<Cell>& row, const SeriesData& s, const std::vector<std::string>& factor_names,
+                      bool external) {
   row.push_back(text_cell(s.case_name));
+  if (external) {
+    row.push_back(text_cell(s.quantity));
+    for (const auto& name : factor_names) {
+      const auto level = s.levels.find(name);
+      row.push_back(text_cell(level == s.levels.end() ? std::string() : level->second));
+    }
+    nlohmann::json levels = nlohmann::json::object();
+    for (const auto& [name, level] : s.levels) levels[name] = level;
+    row.push_back(text_cell(levels.dump()));
+    return;
+  }
   row.push_back(text_cell(s.convection));
   row.push_back(number_cell(s.fwhm_dp));
   row.push_back(text_cell(s.drag));
@@ -59,7 +101,8 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
   Table t;
   const bool external = all_external(series);  // headers name h and each series' own quantity
   t.columns.push_back(text_col("series"));
-  add_factor_columns(t.columns);
+  const std::vector<std::string> factor_names = external_factor_names(series);
+  add_factor_columns(t.columns, factor_names, external);
   t.columns.push_back(text_col("job_hash", {}, true));
   // An external study's CSV names h and the value (its quantity is in the series column).
   t.columns.push_back(external ? num_col("h") : num_col("delta_star", "Δ*"));
@@ -81,7 +124,7 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
       const ExtrapolatedGrid* e = s.extrapolated(g);
       std::vector<Cell> row;
       row.push_back(text_cell(s.label));
-      add_factor_cells(row, s.series);
+      add_factor_cells(row, s.series, factor_names, external);
       row.push_back(text_cell(g.job_hash));
       row.push_back(number_cell(g.delta_star, 4));
       row.push_back(integer_cell(g.nx));
@@ -119,7 +162,9 @@ Table series_table(const std::vector<SeriesSummary>& series, double p_low, doubl
   t.columns.push_back(text_col("verdict"));
   t.columns.push_back(text_col("attention", {}, true));
   t.columns.push_back(text_col("concerns", {}, true));
-  add_factor_columns(t.columns);
+  const bool external = all_external(series);
+  const std::vector<std::string> factor_names = external_factor_names(series);
+  add_factor_columns(t.columns, factor_names, external);
   t.columns.push_back(text_col("status"));
   t.columns.push_back(num_col("grids"));
   t.columns.push_back(num_col("ng", "ng (converged)"));
@@ -166,7 +211,7 @@ Table series_table(const std::vector<SeriesSummary>& series, double p_low, doubl
       for (const auto& c : concern_of[i]->concerns) concern_text += (concern_text.empty() ? "" : "; ") + c;
     row.push_back(text_cell(concern_of[i] ? "yes" : "no"));
     row.push_back(text_cell(concern_text));
-    add_factor_cells(row, s.series);
+    add_factor_cells(row, s.series, factor_names, external);
     row.push_back(text_cell(series_status(s)));
     row.push_back(integer_cell(static_cast<long long>(s.series.grids.size())));
     row.push_back(integer_cell(s.converged()));
