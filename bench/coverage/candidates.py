@@ -38,13 +38,15 @@ def summary(r):
             "u1": r["grids"][0]["u"], "p": r.get("p"), "sigma": r.get("sigma_re") or 0.0}
 
 
-def library(method, with_order=False, leave_one_out=True):
+def library(method, with_order=False, leave_one_out=True, range_floor=True):
     def run(runner, h, f, order):
         opts = ["--method", method]
         if with_order and order:
             opts += ["--order", str(order)]
         if not leave_one_out:
             opts.append("--no-leave-one-out")
+        if not range_floor:
+            opts.append("--no-range-floor")
         return summary(runner(h, f, *opts))
     return run
 
@@ -177,6 +179,119 @@ def combined_with(average):
     return combined
 
 
+class PowerFits:
+    """Least-squares fits f = f0 + c h^p (unweighted) on fixed grids h, p
+    the member of exponents with the smallest residual: a grid search over p
+    with the linear fit in (f0, c) solved exactly at each. The sums that
+    depend on h alone are made once; per data set the residual is
+    Σf² − f0 Σf − c Σx f (the normal equations)."""
+
+    def __init__(self, h, exponents):
+        n = len(h)
+        self.n, self.terms = n, []
+        for p in exponents:
+            x = [v ** p for v in h]
+            sx, sxx = sum(x), sum(v * v for v in x)
+            self.terms.append((x, sx, n * sxx - sx * sx))
+
+    def f0(self, f):
+        n, sf, sff = self.n, sum(f), sum(v * v for v in f)
+        best = None
+        for x, sx, det in self.terms:
+            sxf = sum(a * b for a, b in zip(x, f))
+            c = (n * sxf - sx * sf) / det
+            f0 = (sf - c * sx) / n
+            ssr = sff - f0 * sf - c * sxf
+            if best is None or ssr < best[0]:
+                best = (ssr, f0)
+        return best[1]
+
+
+BOOT_EXPONENTS = [0.5 + 0.05 * k for k in range(33)]  # 0.5 … 2.1, the capped fit's range
+BOOT_CACHE = {}
+
+
+def bootstrap_with(replicates=400, level=0.95, seed=20261207, pairs=False):
+    """Residual bootstrap of the least-squares power-law fit (Efron &
+    Tibshirani 1993, ch. 9: resample the fit's residuals, rescaled by
+    √(n/(n − 3)) for the three fitted parameters, add them to the fitted
+    values, refit with p free in [0.5, 2.1]); the percentile interval
+    [q_lo, q_hi] of the replicates' f0 at the given level.
+    f0 ± U₀ = the interval about the capped f0 (U₀ = its farther end);
+    f₁ ± U₁ holds it (U₁ = max |q − f₁|). Verdict: the capped method's.
+    Fitted values and residuals are the capped fit's (`fhat` per grid).
+    With pairs: resample the (h, f) pairs themselves instead (a draw with
+    fewer than three distinct grids is drawn again)."""
+    import random
+
+    def interval(h, f, fhat):
+        key = (tuple(h), tuple(f), replicates, level, seed, pairs)
+        if key in BOOT_CACHE:
+            return BOOT_CACHE[key]
+        n = len(h)
+        scale = (n / (n - 3)) ** 0.5 if n > 3 else 1.0
+        res = [scale * (fi - gi) for fi, gi in zip(f, fhat)]
+        rng = random.Random(seed)
+        fits = PowerFits(h, BOOT_EXPONENTS)
+
+        def draw():
+            if not pairs:
+                return fits.f0([g + rng.choice(res) for g in fhat])
+            while True:
+                pick = [rng.randrange(n) for _ in range(n)]
+                if len(set(pick)) >= 3:
+                    return PowerFits([h[i] for i in pick], BOOT_EXPONENTS).f0([f[i] for i in pick])
+        f0s = sorted(draw() for _ in range(replicates))
+        BOOT_CACHE[key] = (f0s[int((1 - level) / 2 * (replicates - 1))], f0s[int((1 + level) / 2 * (replicates - 1))])
+        return BOOT_CACHE[key]
+
+    def run(runner, h, f, order):
+        r = runner(h, f, "--method", "capped", "--no-leave-one-out")
+        w = summary(r)
+        if w is None:
+            return None
+        fitted = {g["h"]: g.get("fhat") for g in r["grids"]}
+        if any(fitted.get(v) is None for v in h):
+            return w
+        lo, hi = interval(h, f, [fitted[v] for v in h])
+        out = dict(w)
+        out["u0"] = max(abs(lo - w["f0"]), abs(hi - w["f0"]))
+        out["u1"] = max(abs(lo - w["f1"]), abs(hi - w["f1"]))
+        return out
+    return run
+
+
+def widest_of(*estimators):
+    """The widest of several estimators' intervals, the first one's verdict."""
+    def run(runner, h, f, order):
+        parts = [e(runner, h, f, order) for e in estimators]
+        if any(part is None for part in parts):
+            return None
+        out = dict(parts[0])
+        out["u1"] = max(part["u1"] for part in parts)
+        u0 = [part["u0"] for part in parts if part.get("u0") is not None]
+        out["u0"] = max(u0) if u0 else None
+        return out
+    return run
+
+
+def data_range_floor(estimator, factor, per_interval=False):
+    """An `unreliable` window's U no smaller than factor · Δ_M, the largest
+    difference between its grids' values: the fallback Eça & Hoekstra (2014)
+    use when the data admit no fit (there with factor 3)."""
+    def run(runner, h, f, order):
+        w = estimator(runner, h, f, order)
+        if w is None or w["verdict"] != "unreliable":
+            return w
+        out = dict(w)
+        dm = (max(f) - min(f)) / ((len(f) - 1) if per_interval else 1)
+        out["u1"] = max(w["u1"], factor * dm)
+        if w.get("u0") is not None:
+            out["u0"] = max(w["u0"], factor * dm)
+        return out
+    return run
+
+
 ESTIMATORS = {
     # the library as it is (leave-one-out test on, no order declared)
     "averaged": library("averaged"),
@@ -199,4 +314,16 @@ ESTIMATORS = {
     "combined": combined_with(model_average),
     "combined-3": combined_with(model_average_with(3.0)),
     "combined-a0.3": combined_with(model_average_with(None, 0.3)),
+    # averaged before its floor on unreliable windows (2026-12-07), and floors tried
+    "averaged-before-floor": library("averaged", range_floor=False),
+    "averaged+order-before-floor": library("averaged", with_order=True, range_floor=False),
+    "averaged+order+dm1": data_range_floor(library("averaged", with_order=True, range_floor=False), 1.0),
+    "averaged+order+dm3": data_range_floor(library("averaged", with_order=True, range_floor=False), 3.0),
+    "averaged+order+dphi3": data_range_floor(library("averaged", with_order=True, range_floor=False), 3.0,
+                                             per_interval=True),
+    "bootstrap": bootstrap_with(),
+    "bootstrap-pairs": bootstrap_with(pairs=True),
+    "averaged+bootstrap": widest_of(library("averaged", range_floor=False), bootstrap_with()),
+    "averaged+order+bootstrap": widest_of(library("averaged", with_order=True, range_floor=False),
+                                          bootstrap_with()),
 }

@@ -14,9 +14,11 @@
 #
 # Estimators: the library methods averaged, capped, fm, eh14 as they are; the
 # same with each series' declared formal order (averaged+order: `--order P`);
-# the methods before the bias checks (capped-before: `--no-leave-one-out`);
-# and the prototypes of candidates.py (names listed by --help). About 70 s
-# for the default estimators on a 2-core machine.
+# the methods before the bias checks (capped-before: `--no-leave-one-out`)
+# and averaged before its floor on unreliable windows (`--no-range-floor`);
+# and the prototypes of candidates.py (names listed by --help). About 50 s
+# for the eight library estimators on the 1 165 windows of 2026-12-07 on a
+# 2-core machine; the bootstrap prototypes take minutes.
 import argparse
 import glob
 import json

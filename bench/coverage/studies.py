@@ -7,6 +7,8 @@
 #   held_out.json        bubble seeds 4, 5 (20 cm/s) and 6 (30 cm/s), BVK and
 #                        Gidaspow blend, 14 grids (Δ* 3.3 → 0.39)
 #   held_out_fm18.json   seed 4, BVK, fm18, 12 grids
+#   baseline_fm18_13.json  the baseline with fm18 on its 13 coarsest grids
+#                        (Δ* 3.3 → 0.388), for bubble_series.py
 # Run them into one database each (gridfree run F --db D -j 2), then
 # windows.py on the database.
 #
@@ -32,6 +34,9 @@ write("in_sample", s)
 f = json.load(open(f"{root}/studies/bursting_bubble_baseline_fm18.json"))
 f["name"], f["grids"] = "coverage-in-sample-fm18", {"delta_star": f["grids"]["delta_star"][:11]}
 write("in_sample_fm18", f)
+b = json.load(open(f"{root}/studies/bursting_bubble_baseline_fm18.json"))
+b["name"], b["grids"] = "coverage-bubble-fm18-13", {"delta_star": b["grids"]["delta_star"][:13]}
+write("baseline_fm18_13", b)
 
 cases = {}
 for name, seed, u in [("PC4", 4, 20.0), ("PC5", 5, 20.0), ("PC6u30", 6, 30.0)]:

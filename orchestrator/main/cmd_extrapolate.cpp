@@ -35,6 +35,7 @@ struct ExtrapolateArgs {
   double order = 0;  // 0: no formal order declared
   bool self_check = false;
   bool no_leave_one_out = false;
+  bool no_range_floor = false;
 };
 
 int run_extrapolate(const ExtrapolateArgs& args) {
@@ -47,6 +48,7 @@ int run_extrapolate(const ExtrapolateArgs& args) {
     }
     if (args.order > 0) opts.expected_order = args.order;
     opts.leave_one_out = !args.no_leave_one_out;
+    opts.unreliable_range_floor = !args.no_range_floor;
     validate_options(opts);
     const Series series = read_series_file(args.series_file);
     ExtrapolationResult result = extrapolate(series, opts);
@@ -98,6 +100,9 @@ void add_extrapolate_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--no-leave-one-out", args->no_leave_one_out,
                 "skip the leave-one-out test (f0 without the coarsest and without the finest grid): the "
                 "procedure as it was before that test, for comparison");
+  sub->add_flag("--no-range-floor", args->no_range_floor,
+                "averaged: leave an unreliable result's U below 3 times the data range per refinement: the "
+                "method as it was before that floor, for comparison");
   sub->add_flag("--self-check", args->self_check,
                 "re-extrapolate every window of 4-8 consecutive coarser grids and report whether its U "
                 "covered the whole series' f0 (needs >= 6 grids)");

@@ -120,6 +120,9 @@ ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opt
   const std::vector<std::string> failed = apply_bias_checks(s, opts, refit, out);
   out.verdict = judge(out, opts);
   demote_for_bias(failed, s.h, out.verdict);
+  if (opts.method == ExtrapolationMethod::kAveraged && opts.unreliable_range_floor &&
+      out.verdict.value == "unreliable")
+    floor_unreliable_to_data_range(s, out);
   const std::string record = measured_coverage_sentence(opts.method, opts.expected_order.has_value(),
                                                         out.verdict.value);
   if (!record.empty() && out.method && *out.method != "constant") out.notes.push_back(record);

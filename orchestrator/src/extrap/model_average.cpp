@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "extrap/eh14.h"
 #include "extrap/fm_uncertainty.h"
+#include "extrap/value_format.h"
 
 namespace gridfree {
 
@@ -49,6 +52,25 @@ void widen_u0_to_hold(const std::vector<double>& values, ExtrapolationResult& ou
   double spread = 0;
   for (double v : values) spread = std::max(spread, std::fabs(v - *out.f0));
   out.u0 = *out.u0 + kMinSafetyFactor * spread;
+}
+
+void floor_unreliable_to_data_range(const Series& s, ExtrapolationResult& out) {
+  if (s.size() < 2 || !out.f0) return;
+  const double floor = kUnreliableRangeFactor * data_range(s.f);
+  bool raised = false;
+  for (auto& g : out.grids) {
+    if (!g.u || *g.u >= floor) continue;
+    g.u = floor;
+    if (*out.f0 != 0) g.rde = *g.u / std::fabs(*out.f0);
+    raised = true;
+  }
+  if (out.u0 && *out.u0 < floor) {
+    out.u0 = floor;
+    raised = true;
+  }
+  if (raised)
+    out.notes.push_back("verdict unreliable: U is at least 3 times the data range per refinement, 3 x " +
+                        format_value_u(data_range(s.f), std::nullopt, 4) + ", since the fits do not describe these data");
 }
 
 void averaged_extrapolate(const Series& s, const ExtrapolationOptions& opts, ExtrapolationResult& out) {

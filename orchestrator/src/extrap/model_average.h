@@ -10,7 +10,11 @@
 //   admissible: σ_k < R_f (the fit describes the data), and for the power
 //           law an order found;
 //   widen   U_i ≥ 1.25 max_k |f0_k − f_i| + σ_RE for every grid,
-//           U₀  = U₀ + 1.25 max_k |f0_k − f0|.
+//           U₀  = U₀ + 1.25 max_k |f0_k − f0|;
+//   unreliable: a window the verdict calls `unreliable` (the fits do not
+//           describe it) keeps U_i, U₀ ≥ 3 Δφ, Δφ = (f_max − f_min)/(n − 1)
+//           Eça & Hoekstra's data range parameter and 3 their safety factor
+//           for a fit that fails their criteria (eh14.h).
 #pragma once
 
 #include <string>
@@ -31,6 +35,13 @@ void widen_to_hold(const std::vector<double>& values, double factor, Extrapolati
 
 // U₀ = U₀ + 1.25 max_k |v_k − f0| (U₀ already set).
 void widen_u0_to_hold(const std::vector<double>& values, ExtrapolationResult& out);
+
+// Safety factor on the data range Δφ for an `unreliable` result.
+inline constexpr double kUnreliableRangeFactor = 3.0;
+
+// U_i ≥ 3 Δφ for every grid and U₀ ≥ 3 Δφ (RDE follows U), with a note; for
+// a result whose verdict is `unreliable`.
+void floor_unreliable_to_data_range(const Series& s, ExtrapolationResult& out);
 
 // The `averaged` method: fm_extrapolate with the order capped, then the
 // widening above; out.model_spread records the fits. n ≥ 4, f not constant.

@@ -36,6 +36,9 @@ struct ExtrapolationOptions {
   // The leave-one-out test of bias_checks.h (default on; off reproduces the
   // procedure before it, for comparison: `--no-leave-one-out`).
   bool leave_one_out = true;
+  // `averaged` only: an `unreliable` result's U at least 3 Δφ (model_average.h;
+  // default on; off reproduces the method before it: `--no-range-floor`).
+  bool unreliable_range_floor = true;
 };
 
 // One fit as reported under "fits". Unused members stay empty.

@@ -204,5 +204,28 @@ TEST(ModelAverage, UHoldsTheFirstOrderFitOnSecondOrderData) {
   EXPECT_EQ(r.verdict.value, "converged");
 }
 
+// An `unreliable` window of the default method keeps U no smaller than 3 Δφ,
+// Δφ = (f_max − f_min)/(n − 1): here four grids flat at the fine end, whose
+// capped U₁ (0.0011) is a third of the data's spread; 3 Δφ = 0.003 exactly.
+// Other methods are left as they are.
+TEST(ModelAverage, AnUnreliableWindowKeepsUAtLeastThreeDataRanges) {
+  const std::vector<double> h{1, 2, 4, 8}, f{1.0, 1.0, 1.001, 1.003};
+  const double floor = 3 * (1.003 - 1.0) / 3;
+  ExtrapolationOptions capped;
+  capped.method = ExtrapolationMethod::kCapped;
+  const ExtrapolationResult c = extrapolate(h, f, capped);
+  ASSERT_EQ(c.verdict.value, "unreliable");
+  EXPECT_LT(*c.grids.front().u, floor);  // the floor below is not already there
+  const ExtrapolationResult a = extrapolate(h, f);  // default: averaged
+  ASSERT_EQ(a.verdict.value, "unreliable");
+  for (const auto& g : a.grids) EXPECT_GE(*g.u, floor - 1e-15) << "h = " << g.h;
+  EXPECT_NEAR(*a.grids.front().u, floor, 1e-15);
+  ASSERT_TRUE(a.u0.has_value());
+  EXPECT_GE(*a.u0, floor - 1e-15);
+  bool noted = false;
+  for (const auto& n : a.notes) noted = noted || n.find("at least 3 times the data range") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
 }  // namespace
 }  // namespace gridfree
