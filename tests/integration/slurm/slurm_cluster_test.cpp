@@ -26,6 +26,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "openfoam_mpi_study.h"
+#include "openfoam_present.h"
 #include "project_paths.h"
 #include "quickstart_study.h"
 #include "run_command.h"
@@ -211,6 +213,49 @@ TEST_F(SlurmCluster, ACoresRuleGivesEachArrayItsJobsCores) {
   }
   EXPECT_EQ(by_procs["1"], 3);
   EXPECT_EQ(by_procs["2"], 1);
+}
+
+// The OpenFOAM cavity whose 20² grid gets 2 cores by the cores rule
+// (tests/support/openfoam_mpi_study.h; the local pool's run of it:
+// tests/integration/external/openfoam_mpi_test.cpp): its array asks 2 tasks,
+// Slurm allocates them (jobcomp ProcCnt=2), and mpirun runs icoFoam on 2
+// ranks inside the allocation (processor0 and processor1 in its run folder).
+TEST_F(SlurmCluster, AnOpenFoamStudysFinestGridRunsOnTwoMpiRanksInItsOwnArray) {
+  ASSERT_TRUE(gridfree::test_support::openfoam_present()) << "OpenFOAM is not installed: scripts/install-deps.sh test";
+  // OpenFOAM refuses a case path with a space (fileName::stripInvalid), so
+  // this study and its run folders live beside the work folder, not in it.
+  const fs::path here = dir_ / "openfoam";
+  fs::create_directories(here);
+  const auto file = gridfree::test_support::write_openfoam_mpi_study(here, "cavity_mpi", true);
+  const std::string worker = (fs::path(GRIDFREE_BIN_DIR) / "gridfree-worker").string();
+  const auto r = gridfree("run " + shell_quote(file.string()) + " --db " + shell_quote((here / "g.sqlite").string()) +
+                              " --executor slurm --cpus-per-task 2 -j 4",
+                          "GRIDFREE_WORKER=" + shell_quote(worker));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto sql_here = [&](const std::string& q) {
+    auto out = run_command("sqlite3 " + shell_quote((here / "g.sqlite").string()) + " " + shell_quote(q),
+                           dir_ / "sql.err").out;
+    while (!out.empty() && out.back() == '\n') out.pop_back();
+    return out;
+  };
+  EXPECT_EQ(sql_here("SELECT COUNT(*) FROM results WHERE status = 'converged'"), "3");
+  std::map<std::string, int> by_procs;
+  for (const auto& l : lines_of(cluster_ / "jobcomp.log")) {
+    const auto at = l.find("ProcCnt=");
+    if (at != std::string::npos) ++by_procs[l.substr(at + 8, l.find(' ', at) - at - 8)];
+  }
+  EXPECT_EQ(by_procs["1"], 2);
+  EXPECT_EQ(by_procs["2"], 1);
+  const std::string hash = sql_here("SELECT job_hash FROM jobs WHERE abs(delta_star - 0.1 / " +
+                                    std::to_string(gridfree::test_support::kMpiFinestN) + ") < 1e-12");
+  ASSERT_EQ(hash.size(), 64u) << hash;
+  int decomposed = 0;
+  for (const auto& e : fs::recursive_directory_iterator(here / "g.sqlite.runs"))
+    if (e.is_directory() && e.path().filename() == "processor1") {
+      ++decomposed;
+      EXPECT_EQ(e.path().parent_path().parent_path().filename(), hash);  // <hash>/case/processor1
+    }
+  EXPECT_EQ(decomposed, 1);
 }
 
 TEST_F(SlurmCluster, KillNineThenRerunAdoptsEveryJobAndRunsEachOnce) {
