@@ -10,6 +10,7 @@
 #include "cmd_study.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
+#include "study/case_vocabulary.h"
 #include "study/grid_listing.h"
 #include "extrap/grid_design.h"
 #include "study/study_plan.h"
@@ -45,7 +46,7 @@ std::vector<std::string> grid_warnings(const Study& study, const ExpandedStudy& 
     }
   }
   for (const auto& [series, grids] : h)
-    for (const auto& w : grid_design_warnings(grids))
+    for (const auto& w : grid_design_warnings(grids, case_kind_of(study.definition) == CaseKind::particle_bed))
       if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
   return out;
 }

@@ -119,7 +119,7 @@ ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opt
   };
   const std::vector<std::string> failed = apply_bias_checks(s, opts, refit, out);
   out.verdict = judge(out, opts);
-  demote_for_bias(failed, s.h, out.verdict);
+  demote_for_bias(failed, s.h, out.verdict, opts.h_symbol);
   const std::string record = measured_coverage_sentence(opts.method, opts.expected_order.has_value(),
                                                         out.verdict.value);
   if (!record.empty() && out.method && *out.method != "constant") out.notes.push_back(record);

@@ -36,6 +36,10 @@ struct ExtrapolationOptions {
   // The leave-one-out test of bias_checks.h (default on; off reproduces the
   // procedure before it, for comparison: `--no-leave-one-out`).
   bool leave_one_out = true;
+  // How the verdict's advice names the cell size ("add the next finer grid
+  // Δ* = 0.39"): the case's own symbol (report/case_vocabulary.h), "h" for
+  // an external case.
+  std::string h_symbol = "Δ*";
 };
 
 // One fit as reported under "fits". Unused members stay empty.
