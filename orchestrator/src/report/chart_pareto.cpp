@@ -9,6 +9,7 @@
 #include "report/chart_common.h"
 #include "extrap/value_format.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -33,20 +34,23 @@ std::vector<std::size_t> pareto_front(const std::vector<CostPoint>& points) {
 
 double grid_cost(const GridPoint& g, CostMeasure measure) {
   if (measure == CostMeasure::cpu_seconds) return g.cpu_s;
-  return static_cast<double>(g.nx) * g.ny * g.nz * g.iterations;
+  const double cells = static_cast<double>(g.nx) * g.ny * g.nz;
+  return measure == CostMeasure::cells ? cells : cells * g.iterations;
 }
 
 Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure measure) {
   const bool cpu = measure == CostMeasure::cpu_seconds;
   Chart chart;
   chart.id = cpu ? "speed-accuracy" : "speed-accuracy-work";
-  chart.title = cpu ? "What a target costs: CPU time against RDE" : "What a target costs: cells × iterations against RDE";
+  const CaseVocabulary words = study_vocabulary(series);
+  const std::string work = measure == CostMeasure::cells ? "cells" : "cells × " + words.iteration + "s";
+  chart.title = "What a target costs: " + (cpu ? std::string("CPU time") : work) + " against RDE";
   chart.subtitle = "each converged grid at its a-priori RDE = U_{i}/|f_{0}|; the Pareto front of each converged "
                    "series connected, dominated grids faded; series not converged hollow and never on a front";
   chart.x = {"RDE (a priori, %)", AxisScale::linear, 0.0, std::nullopt};
   chart.x.auto_log = true;
   chart.x.tick_suffix = "%";
-  chart.y = {cpu ? "CPU time (s, this machine)" : "cells × outer iterations", AxisScale::linear, 0.0, std::nullopt};
+  chart.y = {cpu ? "CPU time (s, this machine)" : work, AxisScale::linear, 0.0, std::nullopt};
   chart.y.auto_log = true;
   std::vector<ChartSeries> unconverged;
   for (std::size_t i = 0; i < series.size(); ++i) {
@@ -80,7 +84,7 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
     for (std::size_t k : front) {
       on.x.push_back(points[k].rde);
       on.y.push_back(points[k].cost);
-      on.point_labels.push_back("Δ* " + format_cell_size(h[k]));
+      on.point_labels.push_back(cell_size_text(series_vocabulary(s.series), h[k]));
     }
     for (std::size_t k = 0; k < points.size(); ++k) {
       if (std::find(front.begin(), front.end(), k) != front.end()) continue;

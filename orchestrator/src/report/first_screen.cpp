@@ -10,6 +10,7 @@
 #include "report/report_layout.h"
 #include "report/series_concerns.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 namespace {
@@ -48,8 +49,7 @@ AnswerRow answer_row(const SeriesSummary& s, std::size_t i) {
     r.f0 = u0 ? format_value_u(*f0, u0) : format_value_for_u(*f0, u1) + " (no U₀)";
   }
   if (finest)
-    r.f1 = format_value_u(finest->f, u1) + " at " + (s.series.quantity.empty() ? "Δ* " : "h ") +
-           format_cell_size(finest->h);
+    r.f1 = format_value_u(finest->f, u1) + " at " + cell_size_text(series_vocabulary(s.series), finest->h);
   return r;
 }
 

@@ -22,7 +22,7 @@ namespace {
 std::string table_section(const NamedTable& t, const std::string& empty_text,
                           std::size_t max_rows = std::numeric_limits<std::size_t>::max()) {
   std::string out = "## " + t.title + "\n\n";
-  const std::string note = reading_note(t.file, t.external);
+  const std::string note = reading_note(t.file, t.words);
   if (!note.empty()) out += note + "\n\n";
   const bool cut = t.rows() > std::min(max_rows, t.table.rows.size());
   out += t.table.rows.empty() ? empty_text + "\n" : to_markdown(cut ? first_rows(t.table, max_rows) : t.table);
@@ -60,7 +60,9 @@ std::string render_markdown(const ReportContent& c) {
     for (std::size_t i : worst_series(c.series, kWorstSeries)) verdict_lines(out, verdict_item(c.series[i]), series_page_file(c, i));
   } else {
     for (const auto& v : verdict_items(c)) verdict_lines(out, v);
-    out += "\nCounts per factor level: [" + c.verdict_count_table.file + "](" + c.verdict_count_table.file + ")\n";
+    out += std::string(c.verdict_count_table.table.rows.size() > 1 ? "\nCounts per factor level: ["
+                                                                    : "\nCounts: [") +
+           c.verdict_count_table.file + "](" + c.verdict_count_table.file + ")\n";
   }
   out += "\n";
   out += adaptive_section_markdown(c.data.adaptive_decisions);

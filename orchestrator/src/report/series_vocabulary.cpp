@@ -30,6 +30,14 @@ CaseVocabulary study_vocabulary(const std::vector<SeriesData>& series) {
   return v;
 }
 
+CaseVocabulary study_vocabulary(const std::vector<SeriesSummary>& series) {
+  if (series.empty()) return case_vocabulary(CaseKind::particle_bed);
+  CaseVocabulary v = series_vocabulary(series.front().series);
+  if (v.kind == CaseKind::particle_bed) return v;
+  for (const auto& s : series) v.iterations_counted = v.iterations_counted || any_iterations(s.series);
+  return v;
+}
+
 std::string cell_size_text(const CaseVocabulary& v, double h) { return v.h_symbol + " " + format_cell_size(h); }
 
 }  // namespace gridfree

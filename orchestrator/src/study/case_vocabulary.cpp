@@ -15,6 +15,8 @@ CaseVocabulary case_vocabulary(CaseKind kind, const std::string& h_meaning, cons
     v.h_meaning = "Δ* (cell size / particle diameter)";
     v.quantity_symbol = "DP*";
     v.quantity_meaning = "DP* = Δp / (ρ_{g} U_{0}^{2})";
+    v.h_column = "delta_star";
+    v.value_column = "dp_star";
     v.iteration = "outer iteration";
     v.iterations_counted = true;
     v.model_form = "drag law, filter width, particle configuration";
@@ -25,6 +27,10 @@ CaseVocabulary case_vocabulary(CaseKind kind, const std::string& h_meaning, cons
   v.h_meaning = h_meaning.empty() ? "h" : h_meaning;
   v.quantity_symbol = quantity_name.empty() ? "value" : quantity_name;
   v.quantity_meaning = quantity_meaning.empty() ? v.quantity_symbol : quantity_meaning;
+  v.h_column = "h";
+  v.value_column = "value";
+  v.cells_per_direction = false;
+  v.particle_factors = false;
   v.iteration = "iteration";
   v.iterations_counted = false;  // the caller sets it from the results
   return v;

@@ -30,6 +30,9 @@ struct CaseVocabulary {
   std::string h_meaning;         // axis title: "Δ* (cell size / particle diameter)" | "h = 0.1 / N"
   std::string quantity_symbol;   // "DP*" | the quantity's name ("mean_u2")
   std::string quantity_meaning;  // axis title: "DP* = Δp / (ρ_{g} U_{0}^{2})" | "mean_u2: … [m^2/s^2]"
+  std::string h_column, value_column;  // CSV names: "delta_star", "dp_star" | "h", "value"
+  bool cells_per_direction = true;     // grids have nx × ny × nz cells (an external case declares a count)
+  bool particle_factors = true;        // series vary convection, filter width, drag, deposition
   std::string iteration;         // "outer iteration" | "iteration"
   bool iterations_counted = true;  // results carry iteration counts (an external code's: when it reports them)
   std::string model_form;        // factors a study varies to see model form: "" when the case has none

@@ -166,7 +166,7 @@ TEST(StabilityMap, AGridTheStallRemedyActedOnIsMarkedWithTheIteration) {
   EXPECT_NE(svg.find(">✓ 325 R</text>"), std::string::npos) << svg;
   EXPECT_NE(svg.find(">✓ 81</text>"), std::string::npos) << svg;
   EXPECT_NE(svg.find(">stalled R</text>"), std::string::npos) << svg;
-  EXPECT_NE(svg.find("converged in 325 outer iterations; numerics.stall_remedy relaxed the deferred correction from "
+  EXPECT_NE(svg.find("solved in 325 outer iterations; numerics.stall_remedy relaxed the deferred correction from "
                      "outer iteration 239"),
             std::string::npos)
       << svg;
