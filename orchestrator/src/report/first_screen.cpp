@@ -122,7 +122,9 @@ std::string first_screen_markdown(const ReportContent& c) {
   if (!f.rows.empty()) {
     out += "| series | f0 ± U₀ | verdict | finest f₁ ± U₁ |\n|---|---:|---|---:|\n";
     for (const auto& r : f.rows)
-      out += "| " + md_cell(r.label) + " | " + md_cell(r.f0) + " | " + md_cell(r.verdict) + " | " + md_cell(r.f1) +
+      out += "| " + (c.layout == ReportLayout::summary ? "[" + md_cell(r.label) + "](" + series_page_file(c, r.series) + ")"
+                                                        : md_cell(r.label)) +
+             " | " + md_cell(r.f0) + " | " + md_cell(r.verdict) + " | " + md_cell(r.f1) +
              " |\n";
     out += "\n";
   }
@@ -130,7 +132,9 @@ std::string first_screen_markdown(const ReportContent& c) {
   if (f.attention.empty() && f.study_notes.empty()) return out;
   out += "**Attention: " + std::to_string(f.attention_total) + " of " + std::to_string(c.series.size()) +
          " series need a look**, worst first:\n\n";
-  for (const auto& a : f.attention) out += "- " + a.label + ": " + a.text + "\n";
+  for (const auto& a : f.attention)
+    out += "- " + (c.layout == ReportLayout::summary ? "[" + a.label + "](" + series_page_file(c, a.series) + ")" : a.label) +
+           ": " + a.text + "\n";
   if (f.attention.size() < f.attention_total)
     out += "- … and " + std::to_string(f.attention_total - f.attention.size()) +
            " more (series.csv: the `attention` column; each series' page)\n";

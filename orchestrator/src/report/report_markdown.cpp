@@ -8,6 +8,8 @@
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/report_layout.h"
+#include "report/series_concerns.h"
 #include "report/series_coverage.h"
 #include "report/stability_section.h"
 #include "report/text_format.h"
@@ -40,6 +42,29 @@ void verdict_lines(std::string& out, const VerdictItem& v, const std::string& hr
   for (const auto& n : v.notes) out += "  - Note: " + n + "\n";
 }
 
+// The series that need a look with their verdicts, ranked as the Attention
+// list ranks them (series_concerns.h: failed or stalled grids, a missed
+// coverage self-check, a verdict other than converged, an order against the
+// declared one), the first kWorstSeries and "… and N more".
+std::string needs_a_look_markdown(const ReportContent& c) {
+  const auto concerns = series_concerns(c.series, c.data.p_low, c.data.p_high);
+  std::string out = "### Series that need a look, worst first\n\n";
+  if (concerns.empty()) return out + "None: every series is converged on all its grids.\n";
+  const std::size_t shown = std::min(concerns.size(), kWorstSeries);
+  for (std::size_t k = 0; k < shown; ++k) {
+    const std::size_t i = concerns[k].series;
+    VerdictItem item = verdict_item(c.series[i]);
+    std::string why;
+    for (const auto& t : concerns[k].concerns) why += (why.empty() ? "" : "; ") + t;
+    item.notes.insert(item.notes.begin(), "Needs a look: " + why);
+    verdict_lines(out, item, series_page_file(c, i));
+  }
+  if (concerns.size() > shown)
+    out += "- … and " + std::to_string(concerns.size() - shown) + " more of " + std::to_string(concerns.size()) +
+           " (series.csv: `attention` = yes, `concerns` says why; each series' page)\n";
+  return out;
+}
+
 std::string chart_link(const NamedChart& c) {
   return "![" + md_cell(c.chart.title) + "](" + c.file + ")\n\n" + c.caption + "\n\n";
 }
@@ -56,8 +81,8 @@ std::string render_markdown(const ReportContent& c) {
   out += "## Verdicts\n\n" + reading_note("verdicts") + "\n\n";
   if (summary) {
     out += to_markdown(c.verdict_count_table.table) + "\nCSV: [" + c.verdict_count_table.file + "](" +
-           c.verdict_count_table.file + ")\n\n### Worst series\n\n";
-    for (std::size_t i : worst_series(c.series, kWorstSeries)) verdict_lines(out, verdict_item(c.series[i]), series_page_file(c, i));
+           c.verdict_count_table.file + ")\n\n";
+    out += needs_a_look_markdown(c);
   } else {
     for (const auto& v : verdict_items(c)) verdict_lines(out, v);
     out += std::string(c.verdict_count_table.table.rows.size() > 1 ? "\nCounts per factor level: ["
