@@ -26,6 +26,12 @@ Column prose_col(std::string name, std::string title = {}) {
 Column num_col(std::string name, std::string title = {}, bool csv_only = false) {
   return {std::move(name), std::move(title), csv_only, true};
 }
+// Shown on screen, not printed: fit details series.csv keeps, so the printed
+// series table fits a portrait page.
+Column screen_only(Column c) {
+  c.screen_only = true;
+  return c;
+}
 
 // Factor columns present in the CSV of the grids and series tables.
 void add_factor_columns(std::vector<Column>& columns) {
@@ -136,18 +142,18 @@ Table series_table(const std::vector<SeriesSummary>& series, double p_low, doubl
   t.columns.push_back(text_col("method"));
   t.columns.push_back(num_col("u0", "U0", true));
   t.columns.push_back(num_col("p"));
-  t.columns.push_back(num_col("c"));
-  t.columns.push_back(num_col("c1"));
-  t.columns.push_back(num_col("c2"));
+  t.columns.push_back(screen_only(num_col("c")));
+  t.columns.push_back(screen_only(num_col("c1")));
+  t.columns.push_back(screen_only(num_col("c2")));
   t.columns.push_back(num_col("f0_power", {}, true));
   t.columns.push_back(num_col("p_power", {}, true));
   t.columns.push_back(text_col("p_found", {}, true));
   t.columns.push_back(num_col("f0_mixed", {}, true));
-  t.columns.push_back(num_col("sigma_re", "σ_RE"));
-  t.columns.push_back(num_col("data_range", "R_f"));
+  t.columns.push_back(screen_only(num_col("sigma_re", "σ_RE")));
+  t.columns.push_back(screen_only(num_col("data_range", "R_f")));
   t.columns.push_back(num_col("sigma_re_over_rf", "σ_RE/R_f"));
   t.columns.push_back(text_col("good_fit", "good fit"));
-  t.columns.push_back(num_col("fs", "Fs"));
+  t.columns.push_back(screen_only(num_col("fs", "Fs")));
   // Long texts are CSV-only here; the report prints them per series in its
   // verdict section, so the table keeps to the page width.
   t.columns.push_back(text_col("verdict_reasons", {}, true));

@@ -235,8 +235,10 @@ std::string stability_section_html(const ReportContent& c) {
   const std::string omitted = stability_omitted_note(m);
   out += "<figure class=\"stability-figure\"><div class=\"scroll\">\n" + stability_svg(m) + "</div>";
   if (!omitted.empty()) out += "<figcaption>" + xml_escape(omitted) + "</figcaption>";
-  out += "</figure>\n<h3 id=\"stability-table\">The map as a table</h3>\n<div class=\"scroll\">\n" +
-         to_html(stability_wide_table(m)) + "</div>\n";
+  // The table and its heading are one print block: a landscape page for a
+  // wide table, the section's text and per-series list on portrait pages.
+  out += "</figure>\n<div class=\"print-block\"><h3 id=\"stability-table\">The map as a table</h3>\n"
+         "<div class=\"scroll\">\n" + to_html(stability_wide_table(m)) + "</div></div>\n";
   out += "<h3 id=\"stability-series\">Per series: where it fails, GCI beside least squares</h3>\n<ul>\n";
   for (const auto& r : m.rows)
     out += "<li><strong>" + xml_escape(r.label) + "</strong>: " + xml_escape(r.line) + ". " +
