@@ -3,6 +3,7 @@
 #include "report/chart_pareto.h"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <numeric>
 
@@ -53,6 +54,7 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
   chart.y = {cpu ? "CPU time (s, this machine)" : work, AxisScale::linear, 0.0, std::nullopt};
   chart.y.auto_log = true;
   std::vector<ChartSeries> unconverged;
+  std::set<std::string> labelled;
   for (std::size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];
     if (!s.extrapolation || !s.f0()) continue;
@@ -84,7 +86,11 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
     for (std::size_t k : front) {
       on.x.push_back(points[k].rde);
       on.y.push_back(points[k].cost);
-      on.point_labels.push_back(cell_size_text(series_vocabulary(s.series), h[k]));
+      // Each cell size labelled once, at the first front that holds it:
+      // several series' fronts share the grids, and a label per point would
+      // crowd the chart.
+      const std::string label = cell_size_text(series_vocabulary(s.series), h[k]);
+      on.point_labels.push_back(labelled.insert(label).second ? label : std::string());
     }
     for (std::size_t k = 0; k < points.size(); ++k) {
       if (std::find(front.begin(), front.end(), k) != front.end()) continue;
@@ -103,7 +109,9 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
                             Marker::circle, false, false, false, 7});
     chart.series.back().faded = true;
     chart.note = "For a target RDE, the cheapest grid is the lowest front point left of it whose finer grids are "
-                 "all left of it too (table \"What a target costs\").";
+                 "all left of it too (table \"What a target costs\")." +
+                 std::string(chart.series.size() > 3 ? " Each grid size is labelled once, on the first front that has it."
+                                                     : "");
   }
   return chart;
 }
