@@ -77,15 +77,15 @@ std::string stability_line(const SeriesSummary& s) {
   const auto at = [&words](double h) { return cell_size_text(words, h); };
   if (!first_bad && !last_ok) return pending ? "no grid finished yet" : "no grids";
   if (!first_bad) {
-    line = "converges on every finished grid, down to " + at(last_ok->delta_star);
+    line = "solved on every finished grid, down to " + at(last_ok->delta_star);
   } else {
     const std::string why = stability_failure_text(*first_bad, grid_outcome(*first_bad));
-    line = last_ok ? "converges down to " + at(last_ok->delta_star) + "; first failure at " +
+    line = last_ok ? "solved down to " + at(last_ok->delta_star) + "; first failure at " +
                          at(first_bad->delta_star) + ": " + why
                    : "fails from the coarsest grid: first failure at " + at(first_bad->delta_star) + ": " +
                          why;
     if (failures > 1) line += "; " + std::to_string(failures) + " failed grids in all";
-    if (later_ok > 0) line += "; " + std::to_string(later_ok) + " finer grid(s) converge again";
+    if (later_ok > 0) line += "; " + std::to_string(later_ok) + " finer grid(s) solved again";
   }
   if (pending) line += " (" + std::to_string(pending) + " grid(s) not finished)";
   return line;
