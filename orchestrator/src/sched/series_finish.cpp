@@ -161,6 +161,10 @@ void extrapolation_rows(const nlohmann::json& ex, const std::vector<SeriesPoint>
     r.data_range = num(ex, "data_range");
     r.fs = num(ex, "fs");
     r.chosen = chosen_fit == m;
+    // The chosen fit's row keeps U₀ as the extrapolation gave it (widened by
+    // the averaged method and the bias checks), so `status` prints the f0 ± U₀
+    // the report prints, not 1.25|f0 − f₁| + σ_RE recomputed.
+    if (r.chosen && num(ex, "u0")) f["u0"] = *num(ex, "u0");
     r.status = status;
     if (m == "power" && f.contains("p_found") && f["p_found"].is_boolean() && !f["p_found"].get<bool>())
       r.status += " (p not found)";
