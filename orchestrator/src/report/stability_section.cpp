@@ -46,15 +46,16 @@ struct OutcomeStyle {
   const char* outcome;
   const char* fill;
   const char* meaning;
+  const char* any_code = nullptr;  // the meaning for a case that is not the worker's (no numerics.*, no ε_s)
 };
 
 // Colour-blind-safe fills (Okabe–Ito, lightened for the converged cells).
 constexpr OutcomeStyle kOutcomeStyles[] = {
     {"converged", "#c7eadb", "solved"},  // the legend adds "(✓ <iterations>)" when they are counted
-    {"stalled", "#f0e442", "stalled (a limit cycle: numerics.stall_window)"},
-    {"iteration_cap", "#e69f00", "cap: not converged at numerics.max_iterations"},
+    {"stalled", "#f0e442", "stalled (a limit cycle: numerics.stall_window)", "stalled"},
+    {"iteration_cap", "#e69f00", "cap: not converged at numerics.max_iterations", "cap: not converged"},
     {"diverged", "#d55e00", "diverged"},
-    {"invalid", "#cc79a7", "invalid (no solution, e.g. ε_s ≥ 1 in a cell)"},
+    {"invalid", "#cc79a7", "invalid (no solution, e.g. ε_s ≥ 1 in a cell)", "invalid (no solution)"},
     {"timed_out", "#56b4e9", "timed out"},
     {"failed", "#999999", "failed"},
     {"pending", "#ffffff", "not finished"},
@@ -103,7 +104,7 @@ std::string stability_omitted_note(const StabilityMap& m) {
 // The legend's meaning of an outcome in the study's words.
 std::string outcome_meaning(const OutcomeStyle& s, const CaseVocabulary& words) {
   if (std::string(s.outcome) == "converged" && words.iterations_counted) return "solved (✓ " + words.iteration + "s)";
-  return s.meaning;
+  return words.particle_factors || s.any_code == nullptr ? s.meaning : s.any_code;
 }
 
 std::string stability_intro(const StabilityMap& m) {

@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 // must not print.
 const std::vector<std::string> kParticleWords = {"Δ*",     "particle",        "drag",       "filter width",
                                                  "FM18",   "DP*",             "fwhm",       "outer iteration",
-                                                 "factorial", "per factor level"};
+                                                 "factorial", "per factor level", "ε_s", "numerics."};
 
 // The cavity as the store hands it over: the key's particle columns at
 // their defaults, nx = cells, ny = nz = 1, iterations 0 (the code reports
