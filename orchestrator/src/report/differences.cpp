@@ -25,6 +25,11 @@ std::optional<double> finest_uncertainty(const SeriesSummary& s) {
 }
 
 std::vector<std::pair<std::string, std::string>> series_factors(const SeriesData& series) {
+  if (!series.quantity.empty()) {  // an external series: the case and the study's own factors
+    std::vector<std::pair<std::string, std::string>> out = {{"case", series.case_name}};
+    for (const auto& [name, level] : series.levels) out.emplace_back(name, level);
+    return out;
+  }
   return {{"case", series.case_name},
           {"convection", series.convection},
           {"fwhm_dp", format_g(series.fwhm_dp, 10)},
@@ -75,9 +80,11 @@ std::vector<SeriesDifference> one_factor_differences(const std::vector<SeriesSum
     if (levels.size() > kMaxPairedLevels) continue;
     std::map<std::vector<std::string>, std::vector<std::size_t>> groups;
     for (std::size_t i = 0; i < series.size(); ++i) {
-      std::vector<std::string> others;
+      if (factors[i].size() != nf) continue;  // another kind of series: no factor in common
+      // The quantity is no factor: a series pairs only with one of its own quantity.
+      std::vector<std::string> others = {series[i].series.quantity};
       for (std::size_t j = 0; j < nf; ++j)
-        if (j != k) others.push_back(factors[i][j].second);
+        if (j != k) others.push_back(factors[i][j].first + "=" + factors[i][j].second);
       groups[std::move(others)].push_back(i);
     }
     for (const auto& [key, members] : groups)

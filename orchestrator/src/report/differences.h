@@ -24,7 +24,7 @@
 namespace gridfree {
 
 struct SeriesDifference {
-  std::string factor;             // case | convection | fwhm_dp | drag | deposition
+  std::string factor;             // case | convection | fwhm_dp | drag | deposition | an external study's factor
   std::string value_a, value_b;   // that factor's level in series a and b
   std::size_t a = 0, b = 0;       // indices into the summaries (a < b)
   std::optional<double> f0_a, f0_b;
@@ -44,7 +44,9 @@ std::optional<double> finest_uncertainty(const SeriesSummary& s);
 std::optional<double> relative_difference(double a, double b);
 
 // (factor, level) pairs of a series, in the fixed order case, convection,
-// fwhm_dp, drag, deposition (an empty deposition counts as "diffusion").
+// fwhm_dp, drag, deposition (an empty deposition counts as "diffusion");
+// an external series': case, then the study's own factors in name order.
+// Series pair only with series of their own quantity.
 std::vector<std::pair<std::string, std::string>> series_factors(const SeriesData& series);
 
 // A factor of more levels than this pairs no series: the instances of a

@@ -8,12 +8,44 @@
 
 namespace gridfree {
 
+namespace {
+
+// Two external configurations of one quantity that differ in exactly one
+// factor's level: that factor and the two levels.
+std::optional<ModelFormDifference> external_level_difference(const EnsembleConfig& x, const EnsembleConfig& y) {
+  if (x.levels.size() != y.levels.size()) return std::nullopt;
+  std::optional<ModelFormDifference> out;
+  for (const auto& [name, level] : x.levels) {
+    const auto other = y.levels.find(name);
+    if (other == y.levels.end()) return std::nullopt;
+    if (other->second == level) continue;
+    if (out) return std::nullopt;  // a second factor differs
+    out = ModelFormDifference{};
+    out->factor = name;
+    out->value_a = level;
+    out->value_b = other->second;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<ModelFormDifference> model_form_differences(const std::vector<EnsembleConfig>& configs) {
   std::vector<ModelFormDifference> out;
   for (std::size_t a = 0; a < configs.size(); ++a) {
     for (std::size_t b = a + 1; b < configs.size(); ++b) {
       const auto& x = configs[a];
       const auto& y = configs[b];
+      if (x.ensemble != y.ensemble || x.quantity != y.quantity) continue;
+      if (x.external() || y.external()) {  // the study's own factors: exactly one level differs
+        if (auto d = external_level_difference(x, y)) {
+          d->a = a;
+          d->b = b;
+          if (x.f0 && y.f0) d->relative = relative_difference(x.f0->mean, y.f0->mean);
+          out.push_back(*d);
+        }
+        continue;
+      }
       if (x.ensemble != y.ensemble || x.convection != y.convection || x.deposition != y.deposition) continue;
       const bool drag = x.drag != y.drag, fwhm = x.fwhm_dp != y.fwhm_dp;
       if (drag == fwhm) continue;  // neither or both differ

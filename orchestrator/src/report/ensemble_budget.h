@@ -5,7 +5,9 @@
 //
 //   discretization   D(Δ*) = ensemble-mean RDE of C at Δ*   (U/|f0|, ~95 % band)
 //   model form       M     = max over configurations C' of the same ensemble
-//                            that differ from C in drag or in fwhm_dp only of
+//                            that differ from C in drag or in fwhm_dp only
+//                            (an external study: in one of its own factors,
+//                            same quantity) of
 //                            2 |x̄_C − x̄_C'| / |x̄_C + x̄_C'|   (x̄ = ensemble-mean f0)
 //   instance spread  S     = s/|x̄| of C's f0 over the instances
 //
@@ -24,13 +26,14 @@ namespace gridfree {
 
 struct ModelFormDifference {
   std::size_t a = 0, b = 0;          // indices into the configs
-  std::string factor;                 // drag | fwhm_dp
+  std::string factor;                 // drag | fwhm_dp | an external study's factor
   std::string value_a, value_b;
   std::optional<double> relative;     // 2|x̄a − x̄b| / |x̄a + x̄b|
 };
 
 // Pairs of configurations of one ensemble differing in exactly one of drag,
-// fwhm_dp (convection and deposition equal).
+// fwhm_dp (convection and deposition equal); external configurations of
+// one quantity differing in exactly one factor level.
 std::vector<ModelFormDifference> model_form_differences(const std::vector<EnsembleConfig>& configs);
 
 struct BudgetRow {

@@ -53,6 +53,11 @@ std::optional<SampleStats> sample_stats(const std::vector<double>& values) {
 }
 
 std::string EnsembleConfig::label() const {
+  if (external()) {
+    std::string out = ensemble + ":";
+    for (const auto& [name, level] : levels) out += " " + name + "=" + level;
+    return out + " " + quantity;
+  }
   std::string out = ensemble + ": " + convection + " fwhm" + format_g(fwhm_dp, 10) + " " + drag;
   if (!deposition.empty() && deposition != "diffusion") out += " " + deposition;
   return out;
@@ -68,7 +73,7 @@ std::vector<EnsembleConfig> ensemble_configs(const std::vector<SeriesSummary>& s
       const std::string dep = sd.deposition.empty() ? "diffusion" : sd.deposition;
       auto it = std::find_if(out.begin(), out.end(), [&](const EnsembleConfig& c) {
         return c.ensemble == name && c.convection == sd.convection && c.fwhm_dp == sd.fwhm_dp &&
-               c.drag == sd.drag && c.deposition == dep;
+               c.drag == sd.drag && c.deposition == dep && c.quantity == sd.quantity && c.levels == sd.levels;
       });
       if (it == out.end()) {
         EnsembleConfig c;
@@ -77,6 +82,8 @@ std::vector<EnsembleConfig> ensemble_configs(const std::vector<SeriesSummary>& s
         c.fwhm_dp = sd.fwhm_dp;
         c.drag = sd.drag;
         c.deposition = dep;
+        c.quantity = sd.quantity;
+        c.levels = sd.levels;
         out.push_back(c);
         it = out.end() - 1;
       }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Ensemble statistics of the report (docs/EXTRAPOLATION.md "Ensembles"):
 // for every ensemble and configuration (convection × fwhm_dp × drag ×
-// deposition), the instances' f0 and, per Δ*, their U and RDE = U/|f0|.
+// deposition; an external study's: its factor levels × quantity), the instances' f0 and, per Δ*, their U and RDE = U/|f0|.
 //
 //   mean  x̄ = Σ x_i / n,   sample sd  s = sqrt(Σ (x_i − x̄)² / (n − 1))  (n ≥ 2),
 //   standard error of the mean  s/√n,   relative spread  s/|x̄|.
@@ -44,6 +44,10 @@ struct EnsembleConfig {
   std::string ensemble;
   std::string convection, drag, deposition;
   double fwhm_dp = 0;
+  // An external configuration (docs/EXTERNAL.md "Factors, designs and
+  // ensembles"): its quantity and the study's own factor levels.
+  std::string quantity{};
+  std::map<std::string, std::string> levels{};
   std::vector<std::size_t> members;   // indices into the summaries (instances with this configuration)
   std::vector<std::string> instances; // their case names
   int converged = 0;                  // members with verdict converged
@@ -51,7 +55,8 @@ struct EnsembleConfig {
   std::optional<SampleStats> f0;
   std::vector<EnsembleGrid> grids;    // Δ* ascending
 
-  std::string label() const;          // "sscp: superbee fwhm6 bvk" (+ deposition)
+  std::string label() const;          // "sscp: superbee fwhm6 bvk" (+ deposition); external "seeds: scheme=QUICK T_mean"
+  bool external() const { return !quantity.empty(); }
   bool flagged() const { return converged < static_cast<int>(members.size()); }
 };
 

@@ -28,6 +28,7 @@ std::string external_h_label(const nlohmann::json& h) {
 
 void label_external_series(const nlohmann::json& definition, const SeriesKey& key, SeriesData& sd) {
   sd.quantity = key.quantity;
+  sd.levels = key.levels;
   // The case as the study resolved it: its `external` section may be
   // inherited through "extends".
   const nlohmann::json c = resolved_case(definition, key.case_name);

@@ -15,7 +15,11 @@ std::string SeriesData::value_axis() const { return series_vocabulary(*this).qua
 std::string SeriesData::h_axis() const { return series_vocabulary(*this).h_meaning; }
 
 std::string SeriesData::label() const {
-  if (!quantity.empty()) return case_name + " " + quantity;
+  if (!quantity.empty()) {  // "cavity scheme=QUICK kinetic_energy"
+    std::string out = case_name;
+    for (const auto& [name, level] : levels) out += " " + name + "=" + level;
+    return out + " " + quantity;
+  }
   std::string out = case_name + " " + convection + " ";
   if (deposition == "centroid") {
     out += "centroid";

@@ -43,6 +43,7 @@ struct SeriesData {
   std::string quantity{};
   std::string quantity_label{};      // "kinetic_energy: mean kinetic energy [m^2/s^2]"
   std::string h_label{};             // "h = 1 / N"
+  std::map<std::string, std::string> levels{};  // the study's own factors' levels (external cases)
   // Axis titles: the quantity's, or DP*'s; h's meaning, or Δ*'s.
   std::string value_axis() const;
   std::string h_axis() const;

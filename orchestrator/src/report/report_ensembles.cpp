@@ -10,13 +10,19 @@ namespace gridfree {
 
 namespace {
 
-constexpr const char* kRule =
-    "f0 is averaged over every instance that has one, whatever its verdict (a configuration where not every "
-    "instance converged is flagged); U and RDE at a Δ* over the instances with a value there. Spread: sample "
-    "standard deviation s, standard error s/√n, min–max. Budget at each Δ*: discretization = ensemble-mean RDE "
-    "(a ~95 % bound), model form = the largest relative difference of the ensemble-mean f0 to a configuration "
-    "differing only in drag law or filter width, instance spread = s/|mean f0|; the largest of the three "
-    "dominates.";
+// The averaging and budget rule; an external study's model form is a
+// difference in one of its own factors (report/ensemble_budget.h).
+std::string rule_text(const EnsembleSection& e) {
+  const bool external = !e.configs.empty() && e.configs.front().external();
+  return std::string(
+             "f0 is averaged over every instance that has one, whatever its verdict (a configuration where not every "
+             "instance converged is flagged); U and RDE at a Δ* over the instances with a value there. Spread: "
+             "sample standard deviation s, standard error s/√n, min–max. Budget at each Δ*: discretization = "
+             "ensemble-mean RDE (a ~95 % bound), model form = the largest relative difference of the ensemble-mean "
+             "f0 to a configuration differing only in ") +
+         (external ? "one of the study's factors (same quantity)" : "drag law or filter width") +
+         ", instance spread = s/|mean f0|; the largest of the three dominates.";
+}
 
 std::string flag_text(const EnsembleConfig& c) {
   std::string out;
@@ -134,7 +140,7 @@ void write_ensemble_files(const EnsembleSection& e, const std::filesystem::path&
 std::string ensembles_markdown(const ReportContent& c) {
   const EnsembleSection& e = c.ensembles;
   if (e.empty()) return "";
-  std::string out = "## Ensembles and uncertainty budget\n\n" + std::string(kRule) + "\n\n";
+  std::string out = "## Ensembles and uncertainty budget\n\n" + rule_text(e) + "\n\n";
   out += to_markdown(e.summary_table) + "\nCSV: [ensembles.csv](ensembles.csv)\n\n";
   for (const auto& s : e.sentences) out += "- " + s + "\n";
   out += "\n";
@@ -148,7 +154,7 @@ std::string ensembles_html(const ReportContent& c) {
   const EnsembleSection& e = c.ensembles;
   if (e.empty()) return "";
   std::string out = "<h2 id=\"ensembles\">Ensembles and uncertainty budget</h2>\n<p class=\"note\">" +
-                    xml_escape(kRule) + "</p>\n";
+                    xml_escape(rule_text(e)) + "</p>\n";
   out += "<div class=\"scroll\">\n" + to_html(e.summary_table) + "</div>\n";
   out += "<p class=\"note\">CSV: ensembles.csv (beside this file)</p>\n<ul>\n";
   for (const auto& s : e.sentences) out += "<li>" + xml_escape(s) + "</li>\n";

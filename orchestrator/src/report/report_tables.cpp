@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 #include "extrap/verdict.h"
 #include "extrap/value_format.h"
@@ -33,18 +34,54 @@ Column screen_only(Column c) {
   return c;
 }
 
-// Factor columns present in the CSV of the grids and series tables.
-void add_factor_columns(std::vector<Column>& columns) {
+bool all_external(const std::vector<SeriesSummary>& series);
+
+// The study's own factor names of external series (docs/EXTERNAL.md
+// "Factors, designs and ensembles"), in name order.
+// A factor named like a column of the grids or series table has no column
+// of its own (its level is in `levels`).
+std::vector<std::string> external_factor_names(const std::vector<SeriesSummary>& series) {
+  static const std::set<std::string> kTaken = {
+      "series", "f0", "verdict", "attention", "concerns", "case", "quantity", "levels", "status", "grids", "ng",
+      "failed", "pending", "method", "u0", "p", "c", "c1", "c2", "f0_power", "p_power", "p_found", "f0_mixed",
+      "sigma_re", "data_range", "sigma_re_over_rf", "good_fit", "fs", "verdict_reasons", "note",
+      "extrapolation_notes", "job_hash", "h", "delta_star", "nx", "ny", "nz", "cells", "value", "dp_star", "fhat",
+      "u", "rde", "error_vs_f0", "iterations", "wall_s", "cpu_s", "peak_rss_mb", "reason"};
+  std::set<std::string> names;
+  for (const auto& s : series)
+    for (const auto& [name, level] : s.series.levels)
+      if (kTaken.count(name) == 0) names.insert(name);
+  return {names.begin(), names.end()};
+}
+
+// Factor columns present in the CSV of the grids and series tables: the
+// particle bed's, or an external study's case, quantity, one column per
+// factor and the levels as JSON (the database's `levels`).
+void add_factor_columns(std::vector<Column>& columns, const std::vector<std::string>& factor_names, bool external) {
+  if (external) {
+    columns.push_back(text_col("case", {}, true));
+    columns.push_back(text_col("quantity", {}, true));
+    for (const auto& name : factor_names) columns.push_back(text_col(name, {}, true));
+    columns.push_back(text_col("levels", {}, true));
+    return;
+  }
   for (const char* f : {"case", "convection", "fwhm_dp", "drag", "deposition"}) {
     columns.push_back(text_col(f, {}, true));
   }
 }
 
-// A case without the particle bed's factors leaves their cells empty.
-void add_factor_cells(std::vector<Cell>& row, const SeriesData& s) {
+void add_factor_cells(std::vector<Cell>& row, const SeriesData& s, const std::vector<std::string>& factor_names,
+                      bool external) {
   row.push_back(text_cell(s.case_name));
-  if (!series_vocabulary(s).particle_factors) {
-    for (int k = 0; k < 4; ++k) row.push_back(text_cell(""));
+  if (external) {
+    row.push_back(text_cell(s.quantity));
+    for (const auto& name : factor_names) {
+      const auto level = s.levels.find(name);
+      row.push_back(text_cell(level == s.levels.end() ? std::string() : level->second));
+    }
+    nlohmann::json levels = nlohmann::json::object();
+    for (const auto& [name, level] : s.levels) levels[name] = level;
+    row.push_back(text_cell(levels.dump()));
     return;
   }
   row.push_back(text_cell(s.convection));
@@ -57,6 +94,12 @@ std::string series_status(const SeriesSummary& s) {
   std::string status = s.series.status.empty() ? "unknown" : s.series.status;
   if (s.incomplete && status != "running" && status != "queued") status += " (incomplete)";
   return status;
+}
+
+// An external study's series (docs/EXTERNAL.md): its own factor columns.
+bool all_external(const std::vector<SeriesSummary>& series) {
+  return !series.empty() && std::all_of(series.begin(), series.end(),
+                                        [](const SeriesSummary& s) { return !s.series.quantity.empty(); });
 }
 
 // The case's h and value columns: "delta_star" shown "Δ*", or "h".
@@ -74,8 +117,10 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
   // The case's words: an external study's CSV names h and the value (its
   // quantity is in the series column), a count of cells, no nx × ny × nz.
   const CaseVocabulary v = study_vocabulary(series);
+  const bool external = all_external(series);
   t.columns.push_back(text_col("series"));
-  add_factor_columns(t.columns);
+  const std::vector<std::string> factor_names = external_factor_names(series);
+  add_factor_columns(t.columns, factor_names, external);
   t.columns.push_back(text_col("job_hash", {}, true));
   t.columns.push_back(h_col(v));
   for (const char* n : {"nx", "ny", "nz"}) t.columns.push_back(num_col(n, {}, true));
@@ -96,7 +141,7 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
       const ExtrapolatedGrid* e = s.extrapolated(g);
       std::vector<Cell> row;
       row.push_back(text_cell(s.label));
-      add_factor_cells(row, s.series);
+      add_factor_cells(row, s.series, factor_names, external);
       row.push_back(text_cell(g.job_hash));
       row.push_back(number_cell(g.delta_star, 4));
       const long long cells = static_cast<long long>(g.nx) * g.ny * g.nz;
@@ -133,7 +178,9 @@ Table series_table(const std::vector<SeriesSummary>& series, double p_low, doubl
   t.columns.push_back(text_col("verdict"));
   t.columns.push_back(text_col("attention", {}, true));
   t.columns.push_back(text_col("concerns", {}, true));
-  add_factor_columns(t.columns);
+  const bool external = all_external(series);
+  const std::vector<std::string> factor_names = external_factor_names(series);
+  add_factor_columns(t.columns, factor_names, external);
   t.columns.push_back(text_col("status"));
   t.columns.push_back(num_col("grids"));
   t.columns.push_back(num_col("ng", "ng (converged)"));
@@ -180,7 +227,7 @@ Table series_table(const std::vector<SeriesSummary>& series, double p_low, doubl
       for (const auto& c : concern_of[i]->concerns) concern_text += (concern_text.empty() ? "" : "; ") + c;
     row.push_back(text_cell(concern_of[i] ? "yes" : "no"));
     row.push_back(text_cell(concern_text));
-    add_factor_cells(row, s.series);
+    add_factor_cells(row, s.series, factor_names, external);
     row.push_back(text_cell(series_status(s)));
     row.push_back(integer_cell(static_cast<long long>(s.series.grids.size())));
     row.push_back(integer_cell(s.converged()));

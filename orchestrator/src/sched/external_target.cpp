@@ -66,7 +66,7 @@ ExternalTargetPlan plan_external_target(const Study& study, const ExpandedStudy&
     std::string case_key;
     for (std::size_t k = 0; k < external_grid_count(grids); ++k) {
       const ExternalGrid g = external_grid(*c->external, grids, k);
-      const auto doc = external_job_document(*c->external, c->name, g, k);
+      const auto doc = external_job_document(*c->external, c->name, g, k, key.levels);
       if (k == 0) case_key = cost_similarity_key(doc);
       ExternalTargetGrid t;
       t.h = g.h;

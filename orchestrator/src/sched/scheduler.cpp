@@ -61,10 +61,15 @@ std::string job_label(Store& store, const ClaimedJob& job) {
     label = k.label();
     if (st.as_int(5) != 0) label += " alignment";  // a variant of the alignment check
   }
-  if (is_external_job(job.spec)) {  // one job serves every quantity: the case and its grid
+  if (is_external_job(job.spec)) {  // one job serves every quantity: the case, its levels and its grid
     char h[64];
     std::snprintf(h, sizeof h, " h=%g", job.spec.value("/numerics/grid/h"_json_pointer, 0.0));
-    return job.spec["case"].value("name", label) + h;
+    std::string levels;
+    const auto at = nlohmann::json::json_pointer("/case/external/levels");
+    if (job.spec.contains(at) && job.spec.at(at).is_object())
+      for (const auto& [name, level] : job.spec.at(at).items())
+        if (level.is_string()) levels += " " + name + "=" + level.get<std::string>();
+    return job.spec["case"].value("name", label) + levels + h;
   }
   char cells[64];
   std::snprintf(cells, sizeof cells, " %dx%dx%d", job.cells[0], job.cells[1], job.cells[2]);

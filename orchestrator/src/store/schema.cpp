@@ -4,7 +4,8 @@
 // 7: adaptive series; 8: ensembles; 9: indexes for
 // the scheduler at ensemble scale; 10: the series' coverage self-check;
 // 11: job hashes of the normalised job document; 12: series.quantity for
-// external cases). Status words (docs/INTERFACE.md §5):
+// external cases; 13: series.levels, an external series' factor levels, and
+// NULL particle-bed factors for external series). Status words (docs/INTERFACE.md §5):
 //   jobs, studies: queued | running | done | failed | cancelled
 //   series:        queued | running | done | failed | cancelled
 // A job's `owner` names the process that claimed it ("host:pid:start"),
@@ -352,7 +353,8 @@ void migrate(Database& db, int target) {
   if (v < 10 && target >= 10) db.exec(kV10Coverage);
   if (v < 11 && target >= 11) migrate_job_hashes(db);  // defaults filled in (schema_job_hashes.cpp)
   if (v < 12 && target >= 12) migrate_series_quantity(db);  // external quantities (schema_quantity.cpp)
-  if ((v < 5 && target >= 5) || (v < 11 && target >= 11) || (v < 12 && target >= 12)) {
+  if (v < 13 && target >= 13) migrate_series_levels(db);    // external factor levels (schema_levels.cpp)
+  if ((v < 5 && target >= 5) || (v < 11 && target >= 11) || (v < 12 && target >= 12) || (v < 13 && target >= 13)) {
     auto fk = db.prepare("PRAGMA foreign_key_check");
     if (fk.step()) throw SqliteError("migration left a dangling reference in table " + fk.as_text(0), SQLITE_ERROR);
   }

@@ -7,7 +7,7 @@
 
 namespace gridfree {
 
-inline constexpr int kSchemaVersion = 12;
+inline constexpr int kSchemaVersion = 13;
 
 // Brings the database up to kSchemaVersion (WAL mode, tables, view) in one
 // transaction per step. Refuses a database newer than this program.

@@ -22,4 +22,10 @@ void migrate_job_hashes(Database& db);
 // quantity, '' for dp*) in the series' UNIQUE key; the table rebuilt.
 void migrate_series_quantity(Database& db);
 
+// Step 13 (schema_levels.cpp): series.levels (an external series' factor
+// levels as canonical JSON, '{}' without) in the UNIQUE key; convection,
+// fwhm_dp, drag and deposition NULL for external series; v_results,
+// v_series and v_ensemble_budget made again with quantity and levels.
+void migrate_series_levels(Database& db);
+
 }  // namespace gridfree

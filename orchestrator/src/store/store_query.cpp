@@ -19,12 +19,15 @@ SeriesInfo read_series(const Statement& st) {
   s.verdict_reasons = st.as_text(9);
   s.coverage_json = st.as_text(10);
   s.key.quantity = st.as_text(11);
+  s.key.levels = levels_from_json(st.as_text(12));
   return s;
 }
 
+// An external series' convection, fwhm_dp, drag, deposition are NULL (read as "" and 0).
 constexpr const char* kSeriesColumns =
-    "SELECT id, study_id, case_name, convection, fwhm_dp, drag, deposition, status, COALESCE(verdict, ''), "
-    "COALESCE(verdict_reasons, ''), COALESCE(coverage_json, ''), quantity FROM series ";
+    "SELECT id, study_id, case_name, COALESCE(convection, ''), COALESCE(fwhm_dp, 0), COALESCE(drag, ''), "
+    "COALESCE(deposition, ''), status, COALESCE(verdict, ''), "
+    "COALESCE(verdict_reasons, ''), COALESCE(coverage_json, ''), quantity, levels FROM series ";
 
 }  // namespace
 

@@ -122,13 +122,17 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
 
   std::vector<long long> series_ids;
   auto ins_series = db_.prepare(
-      "INSERT INTO series(study_id, position, case_name, convection, fwhm_dp, drag, deposition, quantity) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
+      "INSERT INTO series(study_id, position, case_name, convection, fwhm_dp, drag, deposition, quantity, levels) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
   for (std::size_t i = 0; i < expanded.series.size(); ++i) {
     const auto& k = expanded.series[i];
     ins_series.reset();
-    ins_series.bind_all(out.study_id, static_cast<long long>(i), k.case_name, k.convection, k.fwhm_dp, k.drag,
-                        k.deposition, k.quantity).run();
+    // An external series has no particle-bed factors: NULL, not "" or 0 (docs/DATABASE.md).
+    const bool bed = !k.external();
+    const auto bed_only = [&](const auto& v) { return bed ? std::optional(v) : std::nullopt; };
+    ins_series.bind_all(out.study_id, static_cast<long long>(i), k.case_name, bed_only(k.convection),
+                        bed_only(k.fwhm_dp), bed_only(k.drag), bed_only(k.deposition), k.quantity,
+                        levels_json(k.levels)).run();
     series_ids.push_back(db_.last_insert_rowid());
   }
   auto ins_job = db_.prepare(

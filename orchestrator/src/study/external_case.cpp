@@ -247,7 +247,7 @@ ExternalGrid external_grid(const ExternalCase& c, const GridVariables& grids, st
 
 std::optional<ExternalCase> parse_external_case(const json& ext, const std::string& at,
                                                 const std::filesystem::path& base_dir, const GridVariables& grids,
-                                                ProblemList& problems) {
+                                                ProblemList& problems, const std::set<std::string>& text_placeholders) {
   const std::size_t before = problems.problems().size();
   ExternalCase c;
   if (!ext.is_object()) return std::nullopt;  // the schema said so
@@ -296,6 +296,21 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
       }
       c.variables[it.key()] = it->get<std::string>();
       defined.insert(it.key());
+    }
+  // Constants: text placeholders of this case (an ensemble's instance changes one).
+  if (auto k = ext.find("constants"); k != ext.end() && k->is_object())
+    for (auto it = k->begin(); it != k->end(); ++it) {
+      const std::string where = child_pointer(at + "/constants", it.key());
+      if (!valid_external_name(it.key()))
+        problems.add(where, "a constant's name is a letter or '_' followed by letters, digits or '_'");
+      else if (it.key() == kExternalCoresPlaceholder)
+        problems.add(where, "'cores' is the job's number of cores (@@cores@@, the study's cores rule); name the constant otherwise");
+      else if (defined.count(it.key()) != 0)
+        problems.add(where, "'" + it.key() + "' is already a grid or derived variable");
+      else if (!it->is_string() && !(it->is_number() && !it->is_boolean()))
+        problems.add(where, "a constant is a string or a number (written as text for @@" + it.key() + "@@)");
+      else
+        c.constants[it.key()] = it->is_string() ? it->get<std::string>() : it->dump();
     }
   // Every expression must parse and read only defined names.
   auto check_expression = [&](const std::string& text, const std::string& where) {
@@ -375,14 +390,27 @@ std::optional<ExternalCase> parse_external_case(const json& ext, const std::stri
   if (problems.problems().size() != before) return std::nullopt;
   std::set<std::string> placeholders = defined;
   placeholders.insert(kExternalCoresPlaceholder);
+  placeholders.insert(text_placeholders.begin(), text_placeholders.end());
+  for (const auto& [name, text] : c.constants) placeholders.insert(name);
   check_external_render_files(c, placeholders, at, problems);
   if (external_grid_count(grids) > 0) check_external_grids(c, grids, at, problems);
   if (problems.problems().size() != before) return std::nullopt;
   return c;
 }
 
+std::set<std::string> rendered_placeholders(const ExternalCase& c) {
+  std::set<std::string> out;
+  for (const auto& r : c.render) {
+    std::ifstream in(c.template_dir / r, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    for (const auto& [line, name] : placeholders_of(text.str())) out.insert(name);
+  }
+  return out;
+}
+
 json external_job_document(const ExternalCase& c, const std::string& case_name, const ExternalGrid& grid,
-                           std::size_t level) {
+                           std::size_t level, const std::map<std::string, std::string>& levels) {
   json variables = json::object();
   for (const auto& [n, v] : grid.variables) variables[n] = v;
   json external = {{"template_dir", c.template_dir.string()},
@@ -393,6 +421,8 @@ json external_job_document(const ExternalCase& c, const std::string& case_name, 
                    {"command", c.command},
                    {"version", c.version},
                    {"collect", c.collect}};
+  if (!c.constants.empty()) external["constants"] = c.constants;
+  if (!levels.empty()) external["levels"] = levels;
   json g = {{"level", level}, {"h", grid.h}};
   if (grid.cells) g["cells"] = *grid.cells;
   return {{"schema", "gridfree/job/1"},

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ struct ExternalCase {
   std::string template_sha256;          // job/template_hash.h, at validation
   std::vector<std::string> render;      // relative to the template
   std::map<std::string, std::string> variables;  // derived name → expression
+  // Case constants: placeholder name → its text (a string verbatim, a number
+  // as JSON writes it), e.g. an instance's snapshot file or seed.
+  std::map<std::string, std::string> constants;
   std::string h_expression;             // h itself, or (volume/(cells))^(1/dim) spelt out
   std::string h_meaning;                // for reports: "h = 1/N" or "h = (V/cells)^(1/2), cells = N^2, V = 1"
   std::string cells_expression;         // "" when not given
@@ -60,9 +64,16 @@ struct ExternalGrid {
 // missing, render file missing, undefined @@name@@ with file and line,
 // expression not finite or h not distinct on some grid, failing version
 // command). nullopt when a problem was found.
+// `text_placeholders` are further names the rendered files may hold (the
+// study's factors, study/external_factors.h).
 std::optional<ExternalCase> parse_external_case(const nlohmann::json& ext, const std::string& at,
                                                 const std::filesystem::path& base_dir,
-                                                const GridVariables& grids, ProblemList& problems);
+                                                const GridVariables& grids, ProblemList& problems,
+                                                const std::set<std::string>& text_placeholders = {});
+
+// The placeholder names of the case's rendered files (files that cannot be
+// read have none).
+std::set<std::string> rendered_placeholders(const ExternalCase& c);
 
 // h as one expression: the string itself, or (V / (cells))^(1/dim) spelt
 // out for {"cells", "volume", "dim"}; `meaning` (if given) for reports.
@@ -75,9 +86,13 @@ ExternalGrid external_grid(const ExternalCase& c, const GridVariables& grids, st
 // Number of grids (the common length of the variable lists; 0 when none).
 std::size_t external_grid_count(const GridVariables& grids);
 
-// The job document of docs/INTERFACE.md §2 for one grid.
+// The job document of docs/INTERFACE.md §2 for one grid (the case's
+// `constants` in it when it has any); `levels` (the
+// series' factor levels, rendered as text) are in it only when there are
+// any, so a study without factors has the documents it always had.
 nlohmann::json external_job_document(const ExternalCase& c, const std::string& case_name,
-                                     const ExternalGrid& grid, std::size_t level);
+                                     const ExternalGrid& grid, std::size_t level,
+                                     const std::map<std::string, std::string>& levels = {});
 
 // The placeholders of a rendered file's text: (line, name) in order.
 std::vector<std::pair<std::size_t, std::string>> placeholders_of(const std::string& text);

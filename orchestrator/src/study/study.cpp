@@ -8,11 +8,30 @@
 namespace gridfree {
 
 std::string SeriesKey::label() const {
-  if (external()) return case_name + " " + quantity;
+  if (external()) {
+    std::string out = case_name;
+    for (const auto& [name, level] : levels) out += " " + name + "=" + level;
+    return out + " " + quantity;
+  }
   char fwhm[32];
   std::snprintf(fwhm, sizeof fwhm, "%g", fwhm_dp);
   std::string out = case_name + " " + convection + " fwhm" + fwhm + " " + drag;
   if (deposition != "diffusion") out += " " + deposition;
+  return out;
+}
+
+std::string levels_json(const std::map<std::string, std::string>& levels) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, level] : levels) j[name] = level;
+  return j.dump();
+}
+
+std::map<std::string, std::string> levels_from_json(const std::string& text) {
+  std::map<std::string, std::string> out;
+  const auto j = nlohmann::json::parse(text, nullptr, false);
+  if (!j.is_object()) return out;
+  for (const auto& [name, level] : j.items())
+    if (level.is_string()) out[name] = level.get<std::string>();
   return out;
 }
 
@@ -29,6 +48,11 @@ const StudyCase* Study::find_case(const std::string& n) const {
 
 std::string Study::design_description() const {
   if (!baseline) return "factorial";
+  if (external()) {  // case and levels; every quantity is in the design
+    std::string out = baseline->case_name;
+    for (const auto& [name, level] : baseline->levels) out += " " + name + "=" + level;
+    return "one_at_a_time (baseline " + out + ")";
+  }
   return "one_at_a_time (baseline " + baseline->label() + ")";
 }
 

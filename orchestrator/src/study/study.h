@@ -3,8 +3,11 @@
 //
 // parse_study() reads and validates a study file (schema + semantics, every
 // problem with its JSON pointer); expand() turns it into series and jobs.
-// A series is one (case, convection, fwhm_dp, drag, deposition) over all
-// grids; a job is one series on one grid: the full job document of
+// A series is one case at one set of factor levels over all grids, for one
+// quantity: a physical case's factors are convection, fwhm_dp, drag and
+// deposition (its quantity dp*); an external case's are the study's own
+// (template placeholders, `levels`), one series per declared quantity. A job
+// is one configuration on one grid: the full job document of
 // docs/INTERFACE.md §2 and its job_hash.
 #pragma once
 
@@ -33,11 +36,23 @@ struct SeriesKey {
   std::string drag = "bvk";
   std::string deposition = "diffusion";  // "diffusion" | "centroid" | a preset "fm18" | "mfix" | a transfer level's name
   std::string quantity{};                // an external case's quantity (study/external_case.h); "" for dp*
+  // An external case's factor levels: the study's factor name → the level's
+  // text as rendered into the template (empty without factors).
+  std::map<std::string, std::string> levels{};
 
   auto operator<=>(const SeriesKey&) const = default;
-  std::string label() const;  // "PC1 superbee fwhm6 bvk" (+ " centroid"); external: "cavity kinetic_energy"
+  // "PC1 superbee fwhm6 bvk" (+ " centroid"); external: "cavity kinetic_energy",
+  // with levels "cavity scheme=QUICK kinetic_energy".
+  std::string label() const;
   bool external() const { return !quantity.empty(); }
 };
+
+// Factor levels as one canonical JSON text: {"name":"level",...}, keys in
+// byte order, no spaces ("{}" without factors): the series' `levels`
+// column (docs/DATABASE.md).
+std::string levels_json(const std::map<std::string, std::string>& levels);
+// The inverse; an empty map for "" or text that is not such an object.
+std::map<std::string, std::string> levels_from_json(const std::string& text);
 
 // The expanded transfer of a series (study_transfer.h): series table columns.
 struct TransferColumns {
@@ -49,6 +64,9 @@ struct TransferColumns {
 struct StudyFactors {
   std::vector<std::string> convection, drag, deposition;
   std::vector<double> fwhm_dp;
+  // An external study's factors (study/external_factors.h): placeholder
+  // name → its levels as text, in the order given.
+  std::map<std::string, std::vector<std::string>> external;
 };
 
 struct StudyCase {
@@ -86,7 +104,7 @@ struct Study {
   StudyFactors factors;             // levels as given (missing factor = its default)
   std::map<std::string, nlohmann::json> transfer_levels;  // object deposition levels by name (study_transfer.h)
   std::map<std::string, std::size_t> deposition_level_index;  // a level's index in the file's factors.deposition
-  std::optional<SeriesKey> baseline;  // set for one_at_a_time designs
+  std::optional<SeriesKey> baseline;  // set for one_at_a_time designs (an external one: case and levels)
   std::vector<double> grid_delta_star;            // grids: {"delta_star": [...]}
   std::vector<std::array<int, 3>> grid_cells;     // or grids: {"cells": [...]}
   std::optional<AdaptiveGrids> adaptive_grids;    // or grids as a target (grid_delta_star = its ladder)
@@ -139,6 +157,10 @@ Study parse_study(const std::filesystem::path& file);
 // Validates and parses an already-read document (base_dir resolves relative
 // particle files). Throws InputError.
 Study parse_study_document(const nlohmann::json& doc, const std::filesystem::path& base_dir);
+
+// An external study's configurations (case and levels, no quantity) in
+// design order: one job per configuration and grid.
+std::vector<SeriesKey> external_configurations(const Study& study);
 
 // The series of the design, without duplicates, baseline first.
 std::vector<SeriesKey> design_series(const Study& study);

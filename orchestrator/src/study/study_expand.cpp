@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // expand(): a Study → its series (the design) and one job per (series, grid).
 //
-// factorial:      every case × convection × fwhm_dp × drag × deposition;
+// factorial:      every case × convection × fwhm_dp × drag × deposition
+//                 (external: every case × the study's own factors' levels, × quantity);
 // one_at_a_time:  the baseline, then each other case and each other level of
 //                 each factor varied alone from it: 1 + Σ_f (levels_f − 1)
 //                 series (cases count as a factor). No duplicates.
@@ -21,6 +22,53 @@
 
 namespace gridfree {
 
+namespace {
+
+// Every combination of the external factors' levels, the first factor's
+// level varying slowest (factors in name order, levels as listed).
+std::vector<std::map<std::string, std::string>> level_combinations(const Study& s) {
+  std::vector<std::map<std::string, std::string>> out = {{}};
+  for (const auto& [name, levels] : s.factors.external) {
+    std::vector<std::map<std::string, std::string>> next;
+    for (const auto& partial : out)
+      for (const auto& level : levels) {
+        auto combined = partial;
+        combined[name] = level;
+        next.push_back(std::move(combined));
+      }
+    out = std::move(next);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<SeriesKey> external_configurations(const Study& s) {
+  std::vector<SeriesKey> out;
+  std::set<std::pair<std::string, std::map<std::string, std::string>>> seen;
+  auto add = [&](const std::string& case_name, const std::map<std::string, std::string>& levels) {
+    if (!seen.insert({case_name, levels}).second) return;
+    SeriesKey k{case_name, "", 0, "", ""};
+    k.levels = levels;
+    out.push_back(std::move(k));
+  };
+  if (s.baseline) {  // one_at_a_time: the baseline, each other case, each other level alone
+    const SeriesKey& b = *s.baseline;
+    add(b.case_name, b.levels);
+    for (const auto& c : s.cases) add(c.name, b.levels);
+    for (const auto& [name, levels] : s.factors.external)
+      for (const auto& level : levels) {
+        auto varied = b.levels;
+        varied[name] = level;
+        add(b.case_name, varied);
+      }
+    return out;
+  }
+  for (const auto& c : s.cases)
+    for (const auto& levels : level_combinations(s)) add(c.name, levels);
+  return out;
+}
+
 std::vector<SeriesKey> design_series(const Study& s) {
   std::vector<SeriesKey> out;
   std::set<SeriesKey> seen;
@@ -28,14 +76,17 @@ std::vector<SeriesKey> design_series(const Study& s) {
     if (seen.insert(k).second) out.push_back(k);
   };
   const auto& f = s.factors;
-  if (s.external()) {  // one series per (case × quantity)
-    for (const auto& c : s.cases)
-      if (c.external)
-        for (const auto& q : c.external->quantities) {
-          SeriesKey k{c.name, "", 0, "", ""};
-          k.quantity = q.name;
-          add(k);
-        }
+  if (s.external()) {  // one series per (case × levels × quantity)
+    for (const auto& config : external_configurations(s)) {
+      const StudyCase* c = s.find_case(config.case_name);
+      if (c == nullptr || !c->external) continue;
+      for (const auto& q : c->external->quantities) {
+        SeriesKey k{config.case_name, "", 0, "", ""};
+        k.levels = config.levels;
+        k.quantity = q.name;
+        add(k);
+      }
+    }
     return out;
   }
   if (s.baseline) {
@@ -97,13 +148,16 @@ nlohmann::json make_job_document(const Study& s, const SeriesKey& key, const std
 
 namespace {
 
-// External cases: one job per (case × grid), shared by the case's series
-// (one per quantity); h from the case's expression.
+// External cases: one job per (case × levels × grid), shared by that
+// configuration's series (one per quantity); h from the case's expression.
 void expand_external(const Study& s, ExpandedStudy& out) {
-  std::map<std::string, std::vector<StudyJob>> jobs_of_case;
-  for (const auto& c : s.cases) {
-    if (!c.external) continue;
-    auto& jobs = jobs_of_case[c.name];
+  using Configuration = std::pair<std::string, std::map<std::string, std::string>>;
+  std::map<Configuration, std::vector<StudyJob>> jobs_of_config;
+  for (const auto& config : external_configurations(s)) {
+    const StudyCase* found = s.find_case(config.case_name);
+    if (found == nullptr || !found->external) continue;
+    const StudyCase& c = *found;
+    auto& jobs = jobs_of_config[{c.name, config.levels}];
     const GridVariables& grids = external_grids_of(s, c.name);
     const auto ladder = s.external_ladders.find(c.name);
     for (std::size_t g = 0; g < external_grid_count(grids); ++g) {
@@ -115,14 +169,14 @@ void expand_external(const Study& s, ExpandedStudy& out) {
       job.cells = {static_cast<int>(std::min(cells, 2.0e9)), 1, 1};
       job.delta_star = grid.h;
       job.delta_star_nominal = ladder != s.external_ladders.end() ? ladder->second.h_nominal.at(g) : grid.h;
-      job.doc = external_job_document(*c.external, c.name, grid, g);
+      job.doc = external_job_document(*c.external, c.name, grid, g, config.levels);
       job.hash = job_hash(job.doc);
       jobs.push_back(std::move(job));
     }
   }
   for (std::size_t si = 0; si < out.series.size(); ++si) {
     out.transfer.emplace_back();
-    for (StudyJob job : jobs_of_case[out.series[si].case_name]) {
+    for (StudyJob job : jobs_of_config[{out.series[si].case_name, out.series[si].levels}]) {
       job.series = si;
       out.jobs.push_back(std::move(job));
     }

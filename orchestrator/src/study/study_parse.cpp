@@ -21,6 +21,7 @@
 #include "particles/particle_io.h"
 #include "schemes/limiter.h"
 #include "study/case_extends.h"
+#include "study/external_factors.h"
 #include "study/slurm_block.h"
 #include "study/study.h"
 #include "study/study_alignment.h"
@@ -434,7 +435,7 @@ void parse_external_cases(const json& doc, const std::filesystem::path& base_dir
     problems.add_once("/grids", "external cases take their grids as {\"variables\": {\"N\": [...]}}, or as an adaptive "
                                 "ladder {\"target_rde\": ..., \"ratio\": ..., \"variables\": {\"N\": {\"coarsest\": ..., "
                                 "\"finest\": ...}}}");
-  for (const char* key : {"factors", "design", "alignment", "ensembles", "numerics"})
+  for (const char* key : {"alignment", "numerics"})
     if (doc.contains(key))
       problems.add_once(std::string("/") + key, "does not apply to external cases (their settings are the template's)");
   if (s.adaptive_grids && s.adaptive_grids->variable) {  // a ladder in h per case (study/external_ladder.h)
@@ -443,7 +444,7 @@ void parse_external_cases(const json& doc, const std::filesystem::path& base_dir
     const GridVariables ends = {{v.name, {v.coarsest, v.finest}}};  // the expressions checked at both ends
     for (auto& c : s.cases) {
       const std::string at = child_pointer("/cases", c.name) + "/external";
-      c.external = parse_external_case(c.doc["external"], at, base_dir, ends, problems);
+      c.external = parse_external_case(c.doc["external"], at, base_dir, ends, problems, external_factor_names(s));
       if (!c.external) continue;
       ExternalLadder ladder = external_ladder(*c.external, v, s.adaptive_grids->ratio, c.name, problems);
       if (!ladder.h_nominal.empty()) s.external_ladders[c.name] = std::move(ladder);
@@ -454,7 +455,8 @@ void parse_external_cases(const json& doc, const std::filesystem::path& base_dir
   if (external_grid_count(s.grid_variables) < 1) return;
   for (auto& c : s.cases) {
     const std::string at = child_pointer("/cases", c.name) + "/external";
-    c.external = parse_external_case(c.doc["external"], at, base_dir, s.grid_variables, problems);
+    c.external = parse_external_case(c.doc["external"], at, base_dir, s.grid_variables, problems,
+                                     external_factor_names(s));
   }
 }
 
@@ -628,10 +630,17 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
       problems.add_once("/numerics", "must be an object");
   }
   parse_cases(doc, base_dir, s, problems);
-  parse_factors(doc, s, problems);
-  default_factors(s);
-  parse_design(doc, s, problems);
-  check_baseline_given(doc, problems);
+  const bool external_study =
+      std::any_of(s.cases.begin(), s.cases.end(), [](const StudyCase& c) { return c.doc.contains("external"); });
+  if (external_study) {  // the study's own factors (study/external_factors.h)
+    parse_external_factors(doc, s, problems);
+    parse_external_design(doc, s, problems);
+  } else {
+    parse_factors(doc, s, problems);
+    default_factors(s);
+    parse_design(doc, s, problems);
+    check_baseline_given(doc, problems);
+  }
   check_slurm_block(doc, problems);
   check_deposition_levels(s, problems);
   parse_grids(doc, s, problems);
@@ -642,7 +651,8 @@ Study parse_study_document(const json& given, const std::filesystem::path& base_
   if (!problems_under(problems, {"/cases", "/grids", "/cores"})) check_study_cores(doc, s, problems);
   // The checks of whole grids and jobs need sound parts; each runs when the
   // parts it reads are, so independent problems are reported together.
-  if (std::any_of(s.cases.begin(), s.cases.end(), [](const StudyCase& c) { return c.doc.contains("external"); })) {
+  if (external_study) {
+    if (!problems_under(problems, {"/cases", "/grids", "/factors"})) check_external_factor_placeholders(s, problems);
     if (!problems.empty()) throw InputError(without_follow_ons(problems.problems()));
     return s;  // external cases: the checks below read physical cases
   }

@@ -117,10 +117,10 @@ TEST(BadDb, ANewerSchemaSaysWhoWroteItAndThatThisOneIsOlder) {
   const auto dir = ts::fresh_scratch_dir("bad_db", "newer");
   const auto db = finished_database(dir);
   ts::sqlite_query(db, "INSERT INTO events(kind, message) VALUES ('schema', "
-                       "'schema version 99 by gridfree 9.9.9 (future), from version 12'); PRAGMA user_version = 99");
+                       "'schema version 99 by gridfree 9.9.9 (future), from version 13'); PRAGMA user_version = 99");
   const auto study = ts::write_ok_study(dir, "another");
   expect_refused(dir, "status --db g.sqlite",
-                 {"g.sqlite", "schema version 99", "gridfree 9.9.9 (future)", "is older", "up to 12"});
+                 {"g.sqlite", "schema version 99", "gridfree 9.9.9 (future)", "is older", "up to 13"});
   expect_refused(dir, "run " + ts::shell_quote(study.string()) + " --db g.sqlite", {"schema version 99"});
   EXPECT_EQ(ts::sqlite_query(db, "PRAGMA user_version"), "99");
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(*) FROM studies"), "1");
@@ -129,7 +129,7 @@ TEST(BadDb, ANewerSchemaSaysWhoWroteItAndThatThisOneIsOlder) {
 TEST(BadDb, EachMigrationRecordsTheGridfreeThatMadeIt) {
   const auto dir = ts::fresh_scratch_dir("bad_db", "schema_event");
   const auto db = finished_database(dir);
-  EXPECT_EQ(ts::sqlite_query(db, "SELECT message LIKE 'schema version 12 by gridfree %, from version 0' FROM events "
+  EXPECT_EQ(ts::sqlite_query(db, "SELECT message LIKE 'schema version 13 by gridfree %, from version 0' FROM events "
                                  "WHERE kind = 'schema'"),
             "1");
 }

@@ -59,7 +59,7 @@ TEST(DbCommands, CheckPassesWhatARunWrote) {
   checked_run(dir);
   const auto r = ts::gridfree_in(dir, "db check --db g.sqlite");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("sound (schema version 12; 1 studies, 3 jobs, 3 results)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sound (schema version 13; 1 studies, 3 jobs, 3 results)"), std::string::npos) << r.out;
 }
 
 // result_path is absolute; a database moved together with its runs folder

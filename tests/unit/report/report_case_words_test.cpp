@@ -29,9 +29,8 @@ const std::vector<std::string> kParticleWords = {"Δ*",     "particle",        "
                                                  "FM18",   "DP*",             "fwhm",       "outer iteration",
                                                  "factorial", "per factor level", "ε_s", "numerics."};
 
-// The cavity as the store hands it over: the key's particle columns at
-// their defaults, nx = cells, ny = nz = 1, iterations 0 (the code reports
-// none); f = 0.0672 − 3 h^1.5 exactly, h = 0.1/N (converged).
+// The cavity as the store hands it over: nx = cells, ny = nz = 1,
+// iterations 0 (the code reports none); f = 0.0672 − 3 h^1.5 exactly, h = 0.1/N (converged).
 StudyReportData cavity_study() {
   StudyReportData d;
   d.study_name = "cavity";
@@ -41,7 +40,6 @@ StudyReportData cavity_study() {
   SeriesData s;
   s.id = 1;
   s.case_name = "cavity";
-  s.deposition = "diffusion";
   s.status = "done";
   s.quantity = "mean_u2";
   s.quantity_label = "mean_u2: volume average of |U|^2 [m^2/s^2]";
@@ -86,12 +84,15 @@ TEST(ReportCaseWords, AnExternalReportHasNoParticleWords) {
   EXPECT_EQ(text.find("cells × iterations against"), std::string::npos);
   EXPECT_EQ(text.find("in 0 "), std::string::npos);
   // grids.csv: a declared count of cells, not nx = cells, ny = nz = 1; the
-  // particle-bed factors and the unknown iterations left empty.
+  // case's own columns (case, quantity, levels: no particle-bed factors) and
+  // the unknown iterations left empty.
   const std::string grids = test_support::slurp(dir / "grids.csv");
   const std::string row = grids.substr(grids.find('\n') + 1, grids.find('\n', grids.find('\n') + 1) - grids.find('\n') - 1);
   EXPECT_EQ(row.find(",6400,1,1,"), std::string::npos) << row;
   EXPECT_NE(row.find(",,,6400,converged,"), std::string::npos) << row;
-  EXPECT_EQ(row.rfind("cavity mean_u2,cavity,,,,,", 0), 0u) << row;
+  EXPECT_EQ(row.rfind("cavity mean_u2,cavity,mean_u2,{},", 0), 0u) << row;
+  EXPECT_NE(row.find(",converged,"), std::string::npos);
+  EXPECT_EQ(grids.substr(0, grids.find('\n')).find("drag"), std::string::npos) << grids.substr(0, 200);
 }
 
 TEST(ReportCaseWords, TheParticleBedReportKeepsItsWords) {

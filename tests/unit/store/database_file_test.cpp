@@ -67,17 +67,18 @@ TEST(DatabaseFile, ANewerSchemaNamesItsWriterOnlyFromAnEventAboutThatVersion) {
   const auto db_file = test_support::fresh_db_path("database_file", "newer");
   { Store store(db_file); }
   Database db(db_file, false);
-  const std::string unknown = newer_schema_message(db, 13, kSchemaVersion);
-  EXPECT_NE(unknown.find("schema version 13, written by a newer gridfree"), std::string::npos) << unknown;
+  const std::string unknown = newer_schema_message(db, kSchemaVersion + 1, kSchemaVersion);
+  EXPECT_NE(unknown.find("schema version " + std::to_string(kSchemaVersion + 1) + ", written by a newer gridfree"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("is older: it knows schema versions up to " + std::to_string(kSchemaVersion)),
             std::string::npos);
-  db.exec("INSERT INTO events(kind, message) VALUES ('schema', 'schema version 13 by gridfree 2.0.0 (abc), from "
-          "version 12')");
-  const std::string named = newer_schema_message(db, 13, kSchemaVersion);
-  EXPECT_NE(named.find("(schema version 13 by gridfree 2.0.0 (abc), from version 12)"), std::string::npos) << named;
-  db.exec("PRAGMA user_version = 13");
-  expect_db_problem([&] { migrate(db); }, "schema version 13 by gridfree 2.0.0");
-  EXPECT_EQ(schema_version(db), 13);  // left as it was
+  const std::string newer = std::to_string(kSchemaVersion + 1);
+  db.exec("INSERT INTO events(kind, message) VALUES ('schema', 'schema version " + newer +
+          " by gridfree 2.0.0 (abc), from version " + std::to_string(kSchemaVersion) + "')");
+  const std::string named = newer_schema_message(db, kSchemaVersion + 1, kSchemaVersion);
+  EXPECT_NE(named.find("(schema version " + newer + " by gridfree 2.0.0 (abc), from version " + std::to_string(kSchemaVersion) + ")"), std::string::npos) << named;
+  db.exec("PRAGMA user_version = " + newer);
+  expect_db_problem([&] { migrate(db); }, "schema version " + newer + " by gridfree 2.0.0");
+  EXPECT_EQ(schema_version(db), kSchemaVersion + 1);  // left as it was
 }
 
 }  // namespace

@@ -178,8 +178,10 @@ TEST(ExternalStudy, ProblemsNameTheirPathAndReason) {
        "/grids/variables", "the grid variables have different lengths (M 2, N 4); each needs one value per grid"},
       {"physical grids", [](json& d, auto&) { d["grids"] = {{"delta_star", {4, 2}}}; },
        "/grids", "external cases take their grids as"},
-      {"factors", [](json& d, auto&) { d["factors"] = {{"drag", {"bvk"}}}; },
-       "/factors", "does not apply to external cases"},
+      {"factor not in the template", [](json& d, auto&) { d["factors"] = {{"drag", {"bvk"}}}; },
+       "/factors/drag", "no rendered file of case poly (input.txt) has the placeholder @@drag@@"},
+      {"numerics", [](json& d, auto&) { d["numerics"] = {{"max_iterations", 10}}; },
+       "/numerics", "does not apply to external cases"},
       {"mixed cases", [](json& d, auto&) {
          d["cases"]["PC1"] = {{"domain_dp", {30, 200, 10}}, {"particle_diameter_cm", 0.01},
                               {"particles", {{"generator", {{"kind", "bursting_bubble"}}}}}};

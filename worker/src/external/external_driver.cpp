@@ -239,9 +239,11 @@ ExternalSightings gather_sightings(const ExternalJob& job, const fs::path& case_
 
 void prepare_external_case(const ExternalJob& job, const fs::path& run_dir, int cores) {
   const fs::path case_dir = run_dir / kCaseFolder;
-  RenderVariables variables = job.variables;
+  RenderTexts variables;  // numbers as render_number writes them, factor levels verbatim
+  for (const auto& [name, value] : job.variables) variables.emplace_back(name, render_number(value));
+  variables.insert(variables.end(), job.levels.begin(), job.levels.end());
   const bool has_cores = std::any_of(variables.begin(), variables.end(), [](const auto& v) { return v.first == "cores"; });
-  if (!has_cores) variables.emplace_back("cores", cores);
+  if (!has_cores) variables.emplace_back("cores", render_number(cores));
   fs::remove_all(case_dir);
   copy_template(job.template_dir, case_dir);
   for (std::size_t i = 0; i < job.render.size(); ++i) {

@@ -50,6 +50,9 @@ struct ExternalJob {
   std::string template_sha256;
   std::vector<std::string> render;     // relative paths inside the template
   std::vector<std::pair<std::string, double>> variables;
+  // Text placeholders: the case's constants and the series' factor levels,
+  // written verbatim (docs/EXTERNAL.md "Factors, designs and ensembles").
+  std::vector<std::pair<std::string, std::string>> levels;
   std::vector<std::string> setup;
   std::vector<std::string> command;    // argv
   std::string version;

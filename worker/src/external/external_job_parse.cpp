@@ -192,8 +192,8 @@ ExternalJob parse_external_job(const nlohmann::json& doc, const std::filesystem:
     job.name = doc.at("case").at("name").get<std::string>();
   const auto& ext = doc.at("case").at("external");
   if (!ext.is_object()) throw InputError(kExt, "must be an object");
-  static const char* kKnown[] = {"template_dir", "template_sha256", "render", "variables", "setup",
-                                 "command",      "version",         "collect"};
+  static const char* kKnown[] = {"template_dir", "template_sha256", "render",  "variables", "constants", "levels",
+                                 "setup",        "command",         "version", "collect"};
   for (const auto& [key, value] : ext.items()) {
     (void)value;
     if (std::find(std::begin(kKnown), std::end(kKnown), key) == std::end(kKnown))
@@ -228,6 +228,26 @@ ExternalJob parse_external_job(const nlohmann::json& doc, const std::filesystem:
         else if (!value.is_number() || !std::isfinite(value.get<double>())) problems.add(w, "must be a finite number");
         else job.variables.emplace_back(name, value.get<double>());
       }
+  }
+  for (const char* key : {"constants", "levels"}) {  // text placeholders
+    if (!ext.contains(key)) continue;
+    const auto& texts = ext.at(key);
+    const std::string at = kExt + "/" + key;
+    if (!texts.is_object()) {
+      problems.add(at, "must be an object: placeholder name → its text");
+      continue;
+    }
+    for (const auto& [name, value] : texts.items()) {
+      const std::string w = at + "/" + name;
+      const auto taken = [&](const auto& list) {
+        return std::any_of(list.begin(), list.end(), [&](const auto& v) { return v.first == name; });
+      };
+      if (!is_identifier(name)) problems.add(w, "a placeholder name is letters, digits and _, not starting with a digit");
+      else if (!value.is_string()) problems.add(w, "must be a string (the text written in its place)");
+      else if (taken(job.variables) || taken(job.levels))
+        problems.add(w, "'" + name + "' is also another placeholder's name; a placeholder has one value");
+      else job.levels.emplace_back(name, value.get<std::string>());
+    }
   }
   job.setup = ext_string_list(ext, "setup", kExt, problems);
   job.command = ext_string_list(ext, "command", kExt, problems);

@@ -37,6 +37,12 @@ std::string render_number(double v) {
 }
 
 std::string render_placeholders(std::string_view text, const RenderVariables& vars, const std::string& file) {
+  RenderTexts texts;
+  for (const auto& [name, value] : vars) texts.emplace_back(name, render_number(value));
+  return render_placeholders(text, texts, file);
+}
+
+std::string render_placeholders(std::string_view text, const RenderTexts& vars, const std::string& file) {
   std::string out;
   out.reserve(text.size());
   int line = 1;
@@ -50,7 +56,7 @@ std::string render_placeholders(std::string_view text, const RenderVariables& va
     }
     const auto it = std::find_if(vars.begin(), vars.end(), [&](const auto& v) { return v.first == *name; });
     if (it == vars.end()) throw UndefinedPlaceholder(file, line, std::string(*name));
-    out += render_number(it->second);
+    out += it->second;
     i += name->size() + 4;
   }
   return out;

@@ -14,6 +14,9 @@
 namespace gridfree {
 
 using RenderVariables = std::vector<std::pair<std::string, double>>;
+// Placeholder name → the text written in its place (a number already
+// rendered by render_number, or a factor level verbatim).
+using RenderTexts = std::vector<std::pair<std::string, std::string>>;
 
 // A placeholder without a variable: where it is and its name.
 struct UndefinedPlaceholder : std::runtime_error {
@@ -30,6 +33,7 @@ std::string render_number(double v);
 // `text` with every placeholder replaced; throws UndefinedPlaceholder
 // naming `file`, the 1-based line and the name of the first unknown one.
 std::string render_placeholders(std::string_view text, const RenderVariables& vars, const std::string& file);
+std::string render_placeholders(std::string_view text, const RenderTexts& texts, const std::string& file);
 
 // The names of the placeholders in `text`, in order of appearance (with repeats).
 std::vector<std::string> placeholder_names(std::string_view text);
