@@ -123,7 +123,9 @@ void add_status_command(CLI::App& app, int& exit_code) {
         const auto counts = stability_status(*store, *id)["counts"];
         std::string line;
         for (const auto& [outcome, n] : counts.items())
-          line += (line.empty() ? "" : ", ") + std::to_string(n.get<int>()) + " " + outcome;
+          // A grid's solver outcome "converged" is printed "solved": "converged" is a series' verdict.
+          line += (line.empty() ? "" : ", ") + std::to_string(n.get<int>()) + " " +
+                  (outcome == "converged" ? std::string("solved") : outcome);
         if (!line.empty()) std::cout << "\ngrids by outcome (stability): " << line << '\n';
       }
       if (!queue.empty()) {

@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
 #include "cmd_study.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
+#include "study/case_vocabulary.h"
 #include "study/grid_listing.h"
 #include "extrap/grid_design.h"
 #include "study/study_plan.h"
@@ -45,9 +47,24 @@ std::vector<std::string> grid_warnings(const Study& study, const ExpandedStudy& 
     }
   }
   for (const auto& [series, grids] : h)
-    for (const auto& w : grid_design_warnings(grids))
+    for (const auto& w : grid_design_warnings(grids, case_kind_of(study.definition) == CaseKind::particle_bed))
       if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
   return out;
+}
+
+// "factorial", "one_at_a_time (baseline …)", or, when the series vary no
+// factor (each case's quantities alone, as an external study without
+// factors), the number of series: never a design that is not there.
+std::string plan_heading(const Study& study, const ExpandedStudy& ex) {
+  std::set<SeriesKey> without_quantity;
+  std::set<std::string> cases;
+  for (SeriesKey k : ex.series) {
+    cases.insert(k.case_name);
+    k.quantity.clear();
+    without_quantity.insert(k);
+  }
+  if (without_quantity.size() > cases.size() || study.baseline) return study.design_description();
+  return std::to_string(ex.series.size()) + " series (no factors)";
 }
 
 }  // namespace
@@ -115,7 +132,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
       if (etp) j["target"] = external_target_json(*etp);
       std::cout << j.dump(2) << '\n';
     } else {
-      std::cout << "study " << study.name << ": " << study.design_description() << "\n" << plan_to_table(plan)
+      std::cout << "study " << study.name << ": " << plan_heading(study, ex) << "\n" << plan_to_table(plan)
                 << "\n" << grid_listing_table(grids);
       if (tp) std::cout << "\n" << target_plan_text(*tp);
       if (etp) std::cout << "\n" << external_target_text(*etp);

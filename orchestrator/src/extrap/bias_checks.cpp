@@ -8,16 +8,14 @@
 #include <string>
 
 #include "extrap/fm_uncertainty.h"
+#include "extrap/value_format.h"
 #include "extrap/verdict.h"
 
 namespace gridfree {
 namespace {
 
-std::string g4_bias(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
+// Numbers that are not values of f (p, P, p/P, factors): 4 significant digits.
+std::string g4_bias(double v) { return format_significant(v, 4); }
 
 bool known(const std::optional<double>& v) { return v && std::isfinite(*v); }
 
@@ -66,28 +64,42 @@ std::string check_leave_one_out(const Series& s, const SubSeriesF0& refit, Extra
   const double f0 = *out.f0;
   const double u0 = out.u0.value_or(0.0);
   const double sigma = out.sigma_re.value_or(0.0);
-  std::string why;
-  bool agree = true;
+  struct Miss {
+    std::string name;
+    std::optional<double> value;
+    double d = 0;
+  };
+  std::vector<Miss> misses;
   double spread = 0;
   for (const auto& [value, name] : {std::pair{b.f0_without_coarsest, "coarsest"},
                                     std::pair{b.f0_without_finest, "finest"}}) {
     if (!known(value)) {
-      agree = false;
-      why += std::string(why.empty() ? "" : "; ") + "the fit without the " + name + " grid has no f0";
+      misses.push_back({name, std::nullopt, 0.0});
       continue;
     }
     const double d = std::fabs(*value - f0);
     spread = std::max(spread, d);
     widen_grids(out, *value, kMinSafetyFactor, sigma);
-    if (d > u0) {
-      agree = false;
-      why += std::string(why.empty() ? "" : "; ") + "f0 without the " + name + " grid (" + g4_bias(*value) +
-             ") differs from f0 = " + g4_bias(f0) + " by " + g4_bias(d) + " > U₀ = " + g4_bias(u0);
-    }
+    if (d > u0) misses.push_back({name, value, d});
   }
   if (out.u0) out.u0 = u0 + kMinSafetyFactor * spread;
-  b.leave_one_out_agree = agree;
-  if (agree) return {};
+  b.leave_one_out_agree = misses.empty();
+  if (misses.empty()) return {};
+  // Values of f to the digits f0 ± U₀ is printed with (U₀ as widened here,
+  // else the finest grid's U₁), the difference taken between the printed values.
+  const std::optional<double> digits_u = f0_digits_u(out.u0, out.grids.front().u);
+  const auto val = [&digits_u](double x) { return format_value_for_u(x, digits_u); };
+  std::string why;
+  for (const auto& m : misses) {
+    why += why.empty() ? "" : "; ";
+    if (!m.value) {
+      why += "the fit without the " + m.name + " grid has no f0";
+      continue;
+    }
+    const double shown_d = std::fabs(rounded_for_u(*m.value, digits_u) - rounded_for_u(f0, digits_u));
+    why += "f0 without the " + m.name + " grid (" + val(*m.value) + ") differs from f0 = " + val(f0) + " by " +
+           val(shown_d) + " > U₀ = " + val(u0) + " of the fit with every grid";
+  }
   return why + " (" + std::to_string(n) + " grids): the series does not agree with itself";
 }
 
@@ -111,14 +123,15 @@ std::vector<std::string> apply_bias_checks(const Series& s, const ExtrapolationO
   return failed;
 }
 
-void demote_for_bias(const std::vector<std::string>& failed, const std::vector<double>& h, Verdict& v) {
+void demote_for_bias(const std::vector<std::string>& failed, const std::vector<double>& h, Verdict& v,
+                     const std::string& h_symbol) {
   if (failed.empty()) return;
   if (v.value != "converged") {
     // Before the closing "add the next finer grid" advice.
     v.reasons.insert(v.reasons.empty() ? v.reasons.end() : v.reasons.end() - 1, failed.begin(), failed.end());
     return;
   }
-  demote_to_pre_asymptotic(failed, h, v);
+  demote_to_pre_asymptotic(failed, h, v, h_symbol);
 }
 
 nlohmann::ordered_json to_ordered_json(const BiasCheck& b) {

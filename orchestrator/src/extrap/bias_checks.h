@@ -56,7 +56,8 @@ std::vector<std::string> apply_bias_checks(const Series& s, const ExtrapolationO
 // A `converged` verdict with a failed test becomes `pre-asymptotic`, the
 // tests' reasons first, and names the next finer grid h_1/r; any other
 // verdict gets the reasons added. h ascending.
-void demote_for_bias(const std::vector<std::string>& failed, const std::vector<double>& h, Verdict& v);
+void demote_for_bias(const std::vector<std::string>& failed, const std::vector<double>& h, Verdict& v,
+                     const std::string& h_symbol = "Δ*");
 
 nlohmann::ordered_json to_ordered_json(const BiasCheck& b);
 

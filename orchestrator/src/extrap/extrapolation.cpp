@@ -119,7 +119,7 @@ ExtrapolationResult extrapolate(const Series& s, const ExtrapolationOptions& opt
   };
   const std::vector<std::string> failed = apply_bias_checks(s, opts, refit, out);
   out.verdict = judge(out, opts);
-  demote_for_bias(failed, s.h, out.verdict);
+  demote_for_bias(failed, s.h, out.verdict, opts.h_symbol);
   if (opts.method == ExtrapolationMethod::kAveraged && opts.unreliable_range_floor &&
       out.verdict.value == "unreliable")
     floor_unreliable_to_data_range(s, out);

@@ -15,7 +15,9 @@ namespace gridfree {
 
 inline constexpr double kAsymptoticDeltaStar = 2.0;
 
-// h = the actual Δ* of one series' grids, any order. Empty when nothing to say.
-std::vector<std::string> grid_design_warnings(const std::vector<double>& h);
+// h = the actual Δ* of one series' grids, any order. Empty when nothing to
+// say. `particle_bed` false (an external case's declared h): the Δ* range
+// measured on particle beds says nothing about it, only the count is judged.
+std::vector<std::string> grid_design_warnings(const std::vector<double>& h, bool particle_bed = true);
 
 }  // namespace gridfree

@@ -39,6 +39,10 @@ struct ExtrapolationOptions {
   // `averaged` only: an `unreliable` result's U at least 3 Δφ (model_average.h;
   // default on; off reproduces the method before it: `--no-range-floor`).
   bool unreliable_range_floor = true;
+  // How the verdict's advice names the cell size ("add the next finer grid
+  // Δ* = 0.39"): the case's own symbol (report/case_vocabulary.h), "h" for
+  // an external case.
+  std::string h_symbol = "Δ*";
 };
 
 // One fit as reported under "fits". Unused members stay empty.

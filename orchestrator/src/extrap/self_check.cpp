@@ -84,9 +84,10 @@ bool CoverageCheck::bias_failed() const {
 
 bool CoverageCheck::flagged() const { return below_promise() || bias_failed(); }
 
-void demote_if_flagged(const CoverageCheck& check, const std::vector<double>& h, Verdict& v) {
+void demote_if_flagged(const CoverageCheck& check, const std::vector<double>& h, Verdict& v,
+                       const std::string& h_symbol) {
   if (v.value != "converged" || !check.flagged()) return;
-  demote_to_pre_asymptotic({"the coverage self-check flags the series: " + check.summary()}, h, v);
+  demote_to_pre_asymptotic({"the coverage self-check flags the series: " + check.summary()}, h, v, h_symbol);
 }
 
 WindowFit window_fit(const ExtrapolationResult& r) {

@@ -95,7 +95,8 @@ CoverageCheck coverage_self_check(const std::vector<double>& h, const std::vecto
 // A `converged` verdict whose series' check is flagged becomes
 // `pre-asymptotic` (the check's summary as its reason, the next finer grid
 // h_1/r named); h ascending. Other verdicts and passing checks are left.
-void demote_if_flagged(const CoverageCheck& check, const std::vector<double>& h, Verdict& v);
+void demote_if_flagged(const CoverageCheck& check, const std::vector<double>& h, Verdict& v,
+                       const std::string& h_symbol = "Δ*");
 
 // The numbers the check needs from a library extrapolation.
 WindowFit window_fit(const ExtrapolationResult& r);

@@ -108,6 +108,11 @@ std::string format_cell_size(double h) {
   return c_printf("%.*g", 4, h);
 }
 
+std::string format_significant(double v, int digits) {
+  if (!std::isfinite(v)) return non_finite(v);
+  return c_printf("%.*g", digits, v);
+}
+
 std::string format_percent_fixed(double fraction, int digits) {
   const double x = fraction * 100.0;
   if (!std::isfinite(x)) return non_finite(x) + "%";

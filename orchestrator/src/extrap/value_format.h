@@ -62,6 +62,11 @@ std::string verdict_line(const std::string& verdict, const std::optional<double>
 // digits ("1.295", "0.7861", "12.5").
 std::string format_cell_size(double h);
 
+// A number that is not a value of the quantity (an observed order p, a
+// ratio, a factor of safety, a rule's threshold): `digits` significant
+// digits, trailing zeros dropped, locale-independent ("1.601", "0.5").
+std::string format_significant(double v, int digits = 4);
+
 // value·100 with `digits` significant digits and a '%', never in exponent
 // notation: 0.0938 → "9.38%", 9.38e-8 → "0.00000938%"; 0 → "0%".
 std::string format_percent_fixed(double fraction, int digits = 3);

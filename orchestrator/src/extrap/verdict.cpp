@@ -12,17 +12,13 @@
 namespace gridfree {
 namespace {
 
-std::string g4(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
+// Numbers that are not values of f (p, σ_RE/R_f, k, ratios): 4 significant
+// digits; RDE as the report prints it; a rule's threshold without trailing zeros.
+std::string g4(double v) { return format_significant(v, 4); }
 
-std::string percent(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g %%", 100.0 * v);
-  return buf;
-}
+std::string percent(double v) { return format_percent_fixed(v); }
+
+std::string threshold_percent(double v) { return format_significant(100.0 * v, 3) + "%"; }
 
 bool finite(const std::optional<double>& v) { return v && std::isfinite(*v); }
 
@@ -33,7 +29,7 @@ bool finite(const std::optional<double>& v) { return v && std::isfinite(*v); }
 // the rounded values, so the sentence agrees with the printed f0 ± U.
 std::string envelope_sentence(double f0, double lo, double hi, double range, double k,
                               const std::optional<double>& u) {
-  const auto q = [&](double v) { return format_value_for_u(v, u, 4); };
+  const auto q = [&](double v) { return format_value_for_u(v, u); };
   if (f0 >= lo && f0 <= hi) return "f0 lies within the data range [" + q(lo) + ", " + q(hi) + "]";
   const bool above = f0 > hi;
   const double d = above ? rounded_for_u(f0, u) - rounded_for_u(hi, u) : rounded_for_u(lo, u) - rounded_for_u(f0, u);
@@ -58,9 +54,10 @@ int monotone_sign(const std::vector<double>& f, std::size_t min_steps) {
   return sign;
 }
 
-std::string next_grid_advice(const Verdict& v, double r) {
+std::string next_grid_advice(const Verdict& v, double r, const std::string& h_symbol) {
   if (!v.next_h) return {};
-  return "add the next finer grid Δ* = " + g4(*v.next_h) + " (the series' mean refinement ratio " + g4(r) + ")";
+  return "add the next finer grid " + h_symbol + " = " + format_cell_size(*v.next_h) +
+         " (the series' mean refinement ratio " + g4(r) + ")";
 }
 
 }  // namespace
@@ -85,11 +82,12 @@ Verdict verdict_without_fit(int n_grids, const std::string& why) {
   return v;
 }
 
-void demote_to_pre_asymptotic(std::vector<std::string> why, const std::vector<double>& h, Verdict& v) {
+void demote_to_pre_asymptotic(std::vector<std::string> why, const std::vector<double>& h, Verdict& v,
+                              const std::string& h_symbol) {
   v.value = "pre-asymptotic";
   const double r = mean_refinement_ratio(h);
   v.next_h = h.front() / r;
-  why.push_back(next_grid_advice(v, r));
+  why.push_back(next_grid_advice(v, r, h_symbol));
   v.reasons = std::move(why);
 }
 
@@ -106,7 +104,7 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
   if (r.status == "insufficient_grids" || n < 4) {
     Verdict v = verdict_without_fit(n, {});
     v.next_h = next_h;
-    if (next_h) v.reasons.push_back(next_grid_advice(v, ratio));
+    if (next_h) v.reasons.push_back(next_grid_advice(v, ratio, opts.h_symbol));
     return v;
   }
 
@@ -128,6 +126,10 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
   }
 
   const auto [lo_it, hi_it] = std::minmax_element(f.begin(), f.end());
+  // Values of f are quoted to the digits f0 ± U is printed with
+  // (value_format.h), so a sentence and the value beside it agree.
+  const std::optional<double> digits_u = f0_digits_u(r.u0, r.grids.front().u);
+  const auto val = [&digits_u](double x) { return format_value_for_u(x, digits_u); };
   if (finite(r.data_range)) {
     c.envelope_low = *lo_it - rules.envelope_k * *r.data_range;
     c.envelope_high = *hi_it + rules.envelope_k * *r.data_range;
@@ -154,17 +156,17 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
                                                            ") cannot be judged"
                                                      : std::string()));
   if (finite(r.f0) && c.envelope_low && !c.inside_envelope)
-    unreliable.push_back("f0 = " + g4(*r.f0) + " lies outside the data envelope [" + g4(*c.envelope_low) + ", " +
-                         g4(*c.envelope_high) + "] (min f − " + g4(rules.envelope_k) + " R_f, max f + " +
+    unreliable.push_back("f0 = " + val(*r.f0) + " lies outside the data envelope [" + val(*c.envelope_low) + ", " +
+                         val(*c.envelope_high) + "] (min f − " + g4(rules.envelope_k) + " R_f, max f + " +
                          g4(rules.envelope_k) + " R_f): the fit extrapolates far beyond what the grids show");
   if (c.behind_trend)
     unreliable.push_back("the data " + std::string(trend > 0 ? "fall" : "rise") + " with every refinement (" +
                          std::to_string(f.size() - 1) + " grid-to-grid differences of one sign) but f0 = " +
-                         g4(*r.f0) + " lies " + (trend > 0 ? "above" : "below") + " the finest value " +
-                         g4(f.front()) + ": the fit turns back against the trend");
+                         val(*r.f0) + " lies " + (trend > 0 ? "above" : "below") + " the finest value " +
+                         val(f.front()) + ": the fit turns back against the trend");
   if (c.rde_finest && *c.rde_finest > rules.rde_unreliable)
     unreliable.push_back("the finest grid's RDE " + percent(*c.rde_finest) + " exceeds " +
-                         percent(rules.rde_unreliable));
+                         threshold_percent(rules.rde_unreliable));
 
   // Conditions a converged series must also meet.
   std::vector<std::string> missing;
@@ -178,7 +180,7 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
                           : "the fit quality σ_RE/R_f is undefined");
   if (c.rde_finest && *c.rde_finest > rules.rde_converged && *c.rde_finest <= rules.rde_unreliable)
     missing.push_back("the finest grid's RDE " + percent(*c.rde_finest) + " exceeds " +
-                      percent(rules.rde_converged));
+                      threshold_percent(rules.rde_converged));
   if (!c.rde_finest && finite(r.f0)) missing.push_back("the finest grid's RDE is undefined (f0 = 0)");
 
   if (!unreliable.empty()) {
@@ -193,14 +195,14 @@ Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts, co
     v.reasons.push_back("p = " + g4(*r.p) + " in [" + g4(opts.p_low) + ", " + g4(opts.p_high) +
                         "], σ_RE/R_f = " + g4(*r.sigma_over_range) + " < 1, " +
                         envelope_sentence(*r.f0, *lo_it, *hi_it, r.data_range.value_or(0.0), rules.envelope_k,
-                                          f0_digits_u(r.u0, r.grids.empty() ? std::nullopt : r.grids.front().u)) +
+                                          digits_u) +
                         ", " +
                         std::to_string(c.dof) + " degrees of freedom, finest-grid RDE " +
-                        percent(*c.rde_finest) + " ≤ " + percent(rules.rde_converged));
+                        percent(*c.rde_finest) + " ≤ " + threshold_percent(rules.rde_converged));
     v.next_h.reset();
     return v;
   }
-  v.reasons.push_back(next_grid_advice(v, ratio) +
+  v.reasons.push_back(next_grid_advice(v, ratio, opts.h_symbol) +
                       (c.dof < rules.min_dof ? " or more grids in the same range" : ""));
   return v;
 }

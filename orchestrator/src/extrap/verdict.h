@@ -39,8 +39,10 @@ struct VerdictRules {
 double mean_refinement_ratio(const std::vector<double>& h);
 
 // `v` made `pre-asymptotic` for `why` (h ascending, n ≥ 2): its reasons
-// become `why` followed by the advice to add the next finer grid, h_1/r.
-void demote_to_pre_asymptotic(std::vector<std::string> why, const std::vector<double>& h, Verdict& v);
+// become `why` followed by the advice to add the next finer grid, h_1/r,
+// named with the case's `h_symbol` (ExtrapolationOptions::h_symbol).
+void demote_to_pre_asymptotic(std::vector<std::string> why, const std::vector<double>& h, Verdict& v,
+                              const std::string& h_symbol = "Δ*");
 
 // The verdict of an extrapolation made with `opts` (only p_low, p_high are used).
 Verdict judge(const ExtrapolationResult& r, const ExtrapolationOptions& opts,

@@ -8,9 +8,10 @@ namespace gridfree {
 namespace {
 
 constexpr const char* kNote =
-    "Each series ran coarse to fine on the ladder Δ*_k = coarsest/ratio^k and was extrapolated after every grid "
-    "from the fourth on; it stopped when its verdict was converged and its finest grid's RDE met the target, or "
-    "ended 'target not reached' at a cap or at finest_delta_star (docs/EXTRAPOLATION.md, \"Adaptive series\"). "
+    "Each series ran coarse to fine on the ladder h_k = coarsest/ratio^k of its cell size and was extrapolated "
+    "after every grid from the fourth on; it stopped when its verdict was converged and its finest grid's RDE met "
+    "the target, or ended 'target not reached' at a cap or at the finest grid the study allows "
+    "(docs/EXTRAPOLATION.md, \"Adaptive series\"). "
     "When the fit of all its grids was not converged, the finest grids (at least five) were fitted instead and "
     "the decision names them; a stopped series' f0, U and verdict are those of the fit its last decision used. "
     "Savings are the cost model's estimates, scaled by the series' measured times, of the grids not run.";

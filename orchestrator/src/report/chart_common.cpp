@@ -6,6 +6,7 @@
 
 #include "extrap/value_format.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -46,7 +47,7 @@ std::string f0_label(const SeriesSummary& s) {
 std::string finest_label(const SeriesSummary& s) {
   if (!s.extrapolation || s.extrapolation->grids.empty()) return {};
   const ExtrapolatedGrid& g = s.extrapolation->grids.front();
-  return "f_{1} = " + format_with_uncertainty(g.f, g.u, 6) + (g.u ? "" : " (no U)") + " (finest Δ* = " +
+  return "f_{1} = " + format_with_uncertainty(g.f, g.u, 6) + (g.u ? "" : " (no U)") + " (finest " + series_vocabulary(s.series).h_symbol + " = " +
          format_cell_size(g.h) + ")";
 }
 

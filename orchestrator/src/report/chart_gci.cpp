@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "report/chart_common.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -36,12 +37,14 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
   Chart chart;
   chart.id = "gci-" + series_slug(s, index);
   chart.title = "Three-grid GCI vs regression: " + s.label + title_suffix(s);
-  chart.subtitle = "each consecutive triplet at its finest Δ*: φ_{1} ± GCI_{fine} (marker = convergence type) and φ_{ext}";
-  // An external series: its quantity and h (docs/EXTERNAL.md).
-  const bool external = !s.series.quantity.empty();
-  chart.x = delta_star_axis(external ? s.series.h_label + " (finest grid of the triplet)"
-                                     : std::string("Δ* (finest grid of the triplet)"));
-  chart.y = {external ? s.series.quantity_label : std::string("DP*"), AxisScale::linear, std::nullopt, std::nullopt};
+  // The case's words: an external series' quantity and declared h (docs/EXTERNAL.md).
+  const CaseVocabulary words = series_vocabulary(s.series);
+  chart.subtitle = "each consecutive triplet at its finest " + words.h_symbol +
+                   ": φ_{1} ± GCI_{fine} (marker = convergence type) and φ_{ext}";
+  chart.x = delta_star_axis((words.kind == CaseKind::external ? words.h_meaning : words.h_symbol) +
+                            " (finest grid of the triplet)");
+  chart.y = {words.kind == CaseKind::external ? words.quantity_meaning : words.quantity_symbol, AxisScale::linear,
+             std::nullopt, std::nullopt};
   if (!s.extrapolation || s.extrapolation->gci.empty()) return chart;
   const ExtrapolationView& e = *s.extrapolation;
   ChartSeries grids{"f_{i} ± U_{i} (regression)", {}, {}, {}, Marker::circle, false, false, true, 0};

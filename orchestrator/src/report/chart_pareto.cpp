@@ -3,12 +3,14 @@
 #include "report/chart_pareto.h"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <numeric>
 
 #include "report/chart_common.h"
 #include "extrap/value_format.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -33,22 +35,26 @@ std::vector<std::size_t> pareto_front(const std::vector<CostPoint>& points) {
 
 double grid_cost(const GridPoint& g, CostMeasure measure) {
   if (measure == CostMeasure::cpu_seconds) return g.cpu_s;
-  return static_cast<double>(g.nx) * g.ny * g.nz * g.iterations;
+  const double cells = static_cast<double>(g.nx) * g.ny * g.nz;
+  return measure == CostMeasure::cells ? cells : cells * g.iterations;
 }
 
 Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure measure) {
   const bool cpu = measure == CostMeasure::cpu_seconds;
   Chart chart;
   chart.id = cpu ? "speed-accuracy" : "speed-accuracy-work";
-  chart.title = cpu ? "What a target costs: CPU time against RDE" : "What a target costs: cells × iterations against RDE";
+  const CaseVocabulary words = study_vocabulary(series);
+  const std::string work = measure == CostMeasure::cells ? "cells" : "cells × " + words.iteration + "s";
+  chart.title = "What a target costs: " + (cpu ? std::string("CPU time") : work) + " against RDE";
   chart.subtitle = "each converged grid at its a-priori RDE = U_{i}/|f_{0}|; the Pareto front of each converged "
                    "series connected, dominated grids faded; series not converged hollow and never on a front";
   chart.x = {"RDE (a priori, %)", AxisScale::linear, 0.0, std::nullopt};
   chart.x.auto_log = true;
   chart.x.tick_suffix = "%";
-  chart.y = {cpu ? "CPU time (s, this machine)" : "cells × outer iterations", AxisScale::linear, 0.0, std::nullopt};
+  chart.y = {cpu ? "CPU time (s, this machine)" : work, AxisScale::linear, 0.0, std::nullopt};
   chart.y.auto_log = true;
   std::vector<ChartSeries> unconverged;
+  std::set<std::string> labelled;
   for (std::size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];
     if (!s.extrapolation || !s.f0()) continue;
@@ -80,7 +86,11 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
     for (std::size_t k : front) {
       on.x.push_back(points[k].rde);
       on.y.push_back(points[k].cost);
-      on.point_labels.push_back("Δ* " + format_cell_size(h[k]));
+      // Each cell size labelled once, at the first front that holds it:
+      // several series' fronts share the grids, and a label per point would
+      // crowd the chart.
+      const std::string label = cell_size_text(series_vocabulary(s.series), h[k]);
+      on.point_labels.push_back(labelled.insert(label).second ? label : std::string());
     }
     for (std::size_t k = 0; k < points.size(); ++k) {
       if (std::find(front.begin(), front.end(), k) != front.end()) continue;
@@ -99,7 +109,9 @@ Chart speed_accuracy_chart(const std::vector<SeriesSummary>& series, CostMeasure
                             Marker::circle, false, false, false, 7});
     chart.series.back().faded = true;
     chart.note = "For a target RDE, the cheapest grid is the lowest front point left of it whose finer grids are "
-                 "all left of it too (table \"What a target costs\").";
+                 "all left of it too (table \"What a target costs\")." +
+                 std::string(chart.series.size() > 3 ? " Each grid size is labelled once, on the first front that has it."
+                                                     : "");
   }
   return chart;
 }

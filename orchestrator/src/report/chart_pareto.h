@@ -30,7 +30,9 @@ struct CostPoint {
 // front), sorted by RDE ascending (ties by cost). Equal points are all kept.
 std::vector<std::size_t> pareto_front(const std::vector<CostPoint>& points);
 
-enum class CostMeasure { cpu_seconds, cell_iterations };
+// cell_iterations: cells × iterations (any machine); cells: the size alone,
+// for a code whose results report no iterations (study/case_vocabulary.h).
+enum class CostMeasure { cpu_seconds, cell_iterations, cells };
 
 // CPU seconds or nx·ny·nz·iterations of one job.
 double grid_cost(const GridPoint& grid, CostMeasure measure);

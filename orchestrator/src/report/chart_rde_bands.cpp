@@ -10,6 +10,7 @@
 #include "report/chart_common.h"
 #include "report/differences.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -73,9 +74,11 @@ Chart rde_band_chart(const std::vector<SeriesSummary>& series, const std::string
   Chart chart;
   chart.id = "fig2-rde-" + (factor.empty() ? std::string("all") : slugify(factor));
   chart.title = factor.empty() ? "RDE = U/|f_{0}| over all series" : "RDE = U/|f_{0}| by " + factor;
-  chart.subtitle = "at each Δ*: the median over the series (solid) and the 10th and 90th percentiles (dashed); "
+  const CaseVocabulary words = study_vocabulary(series);
+  chart.subtitle = "at each " + words.h_symbol +
+                   ": the median over the series (solid) and the 10th and 90th percentiles (dashed); "
                    "every series' value in grids.csv";
-  chart.x = delta_star_axis();
+  chart.x = delta_star_axis(words.h_meaning);
   chart.y = rde_percent_axis();
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const auto& by_grid = rde[levels[i]];

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -41,12 +42,10 @@ const GridPoint* cheapest_grid_for(const SeriesSummary& s, double target) {
 
 Table cost_table(const std::vector<SeriesSummary>& series, const std::vector<double>& targets) {
   Table t;
-  const bool external = !series.empty() && std::all_of(series.begin(), series.end(), [](const SeriesSummary& x) {
-    return !x.series.quantity.empty();
-  });  // an external study's declared h
+  const CaseVocabulary words = study_vocabulary(series);  // an external study's declared h
   t.columns = {{"series", {}, false, false},         {"verdict", {}, false, false},
                {"target_rde", "target RDE", false, true},
-               external ? Column{"h", "cheapest h", false, true} : Column{"delta_star", "cheapest Δ*", false, true},
+               Column{words.h_column, "cheapest " + words.h_symbol, false, true},
                {"cells", {}, false, true},           {"cell_iterations", "cells × iterations", false, true},
                {"cpu_s", "CPU s", false, true},      {"peak_rss_mb", "peak MB", false, true},
                {"rde", "its RDE", false, true}};
@@ -67,7 +66,9 @@ Table cost_table(const std::vector<SeriesSummary>& series, const std::vector<dou
         const long long cells = static_cast<long long>(g->nx) * g->ny * g->nz;
         row.push_back(number_cell(g->delta_star, 4));
         row.push_back(integer_cell(cells));
-        row.push_back(number_cell(static_cast<double>(cells) * g->iterations, 3));
+        // Empty when the code reports no iterations: never a product of 0.
+        row.push_back(words.iterations_counted ? number_cell(static_cast<double>(cells) * g->iterations, 3)
+                                               : text_cell(""));
         row.push_back(number_cell(g->cpu_s, 3));
         row.push_back(number_cell(g->peak_rss_mb, 3));
         row.push_back(percent_cell(rde_of(s, *g)));

@@ -5,6 +5,7 @@
 #include "report/differences.h"
 #include "extrap/value_format.h"
 #include "report/text_format.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 
@@ -137,10 +138,12 @@ std::vector<std::string> budget_sentences(const std::vector<EnsembleConfig>& con
       while (j + 1 < mine.size() && mine[j + 1]->dominant == mine[i]->dominant) ++j;
       if (!first) text += "; ";
       first = false;
-      const std::string range = i == j ? "at Δ* " + format_cell_size(mine[i]->delta_star)
-                                       : "for Δ* " + format_cell_size(mine[i]->delta_star) + "–" +
+      const std::string h =
+          case_vocabulary(configs[c].external() ? CaseKind::external : CaseKind::particle_bed).h_symbol + " ";
+      const std::string range = i == j ? "at " + h + format_cell_size(mine[i]->delta_star)
+                                       : "for " + h + format_cell_size(mine[i]->delta_star) + "–" +
                                              format_cell_size(mine[j]->delta_star);
-      text += mine[i]->dominant + " dominates " + range + " (at Δ* " + format_cell_size(mine[i]->delta_star) + ": " +
+      text += mine[i]->dominant + " dominates " + range + " (at " + h + format_cell_size(mine[i]->delta_star) + ": " +
               numbers(*mine[i]) + ")";
       i = j + 1;
     }

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "report/text_format.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 
@@ -21,7 +22,11 @@ Chart ensemble_budget_chart(const std::string& ensemble, const std::vector<Ensem
   chart.id = "budget-" + slugify(ensemble);
   chart.title = "Uncertainty budget, ensemble " + ensemble;
   chart.subtitle = "discretization (mean RDE) vs model form and instance spread";
-  chart.x = {"Δ* (cell size / particle diameter)", AxisScale::linear, 0.0, std::nullopt};
+  const bool external = std::any_of(configs.begin(), configs.end(), [&](const EnsembleConfig& c) {
+    return c.ensemble == ensemble && c.external();
+  });
+  chart.x = {case_vocabulary(external ? CaseKind::external : CaseKind::particle_bed).h_meaning, AxisScale::linear, 0.0,
+             std::nullopt};
   chart.y = {"relative size (%)", AxisScale::linear, 0.0, std::nullopt};
   int k = 0;
   for (std::size_t c = 0; c < configs.size(); ++c) {

@@ -20,6 +20,7 @@ Extrapolator library_extrapolator(const ExtrapolatorSettings& settings) {
     options.p_high = settings.p_high;
     options.weights = settings.weights == "uniform" ? Weighting::kUniform : Weighting::kInverseH;
     options.expected_order = settings.expected_order;
+    options.h_symbol = settings.h_symbol;
     validate_options(options);
     return to_json(extrapolate(h, f, options));
   };

@@ -22,6 +22,7 @@ struct ExtrapolatorSettings {
   double p_low = 0.5, p_high = 2.1;  // power-law acceptance range
   std::string weights = "inverse_h"; // inverse_h | uniform (fm fits)
   std::optional<double> expected_order;  // declared formal order (extrap/bias_checks.h)
+  std::string h_symbol = "Δ*";           // the case's cell-size symbol in the verdict's advice (study/case_vocabulary.h)
 };
 
 // extrap/extrapolation.h's extrapolate(), returned as to_json(result).

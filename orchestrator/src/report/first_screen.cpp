@@ -10,6 +10,7 @@
 #include "report/report_layout.h"
 #include "report/series_concerns.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 namespace {
@@ -48,8 +49,7 @@ AnswerRow answer_row(const SeriesSummary& s, std::size_t i) {
     r.f0 = u0 ? format_value_u(*f0, u0) : format_value_for_u(*f0, u1) + " (no U₀)";
   }
   if (finest)
-    r.f1 = format_value_u(finest->f, u1) + " at " + (s.series.quantity.empty() ? "Δ* " : "h ") +
-           format_cell_size(finest->h);
+    r.f1 = format_value_u(finest->f, u1) + " at " + cell_size_text(series_vocabulary(s.series), finest->h);
   return r;
 }
 
@@ -122,7 +122,9 @@ std::string first_screen_markdown(const ReportContent& c) {
   if (!f.rows.empty()) {
     out += "| series | f0 ± U₀ | verdict | finest f₁ ± U₁ |\n|---|---:|---|---:|\n";
     for (const auto& r : f.rows)
-      out += "| " + md_cell(r.label) + " | " + md_cell(r.f0) + " | " + md_cell(r.verdict) + " | " + md_cell(r.f1) +
+      out += "| " + (c.layout == ReportLayout::summary ? "[" + md_cell(r.label) + "](" + series_page_file(c, r.series) + ")"
+                                                        : md_cell(r.label)) +
+             " | " + md_cell(r.f0) + " | " + md_cell(r.verdict) + " | " + md_cell(r.f1) +
              " |\n";
     out += "\n";
   }
@@ -130,7 +132,9 @@ std::string first_screen_markdown(const ReportContent& c) {
   if (f.attention.empty() && f.study_notes.empty()) return out;
   out += "**Attention: " + std::to_string(f.attention_total) + " of " + std::to_string(c.series.size()) +
          " series need a look**, worst first:\n\n";
-  for (const auto& a : f.attention) out += "- " + a.label + ": " + a.text + "\n";
+  for (const auto& a : f.attention)
+    out += "- " + (c.layout == ReportLayout::summary ? "[" + a.label + "](" + series_page_file(c, a.series) + ")" : a.label) +
+           ": " + a.text + "\n";
   if (f.attention.size() < f.attention_total)
     out += "- … and " + std::to_string(f.attention_total - f.attention.size()) +
            " more (series.csv: the `attention` column; each series' page)\n";

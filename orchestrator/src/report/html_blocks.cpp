@@ -18,7 +18,7 @@ std::string html_page_head(const std::string& title) {
 std::string table_section(const NamedTable& t, const std::string& id, const std::string& empty_text,
                           std::size_t max_rows, const std::string& csv_href) {
   std::string out = "<section>\n<h2 id=\"" + id + "\">" + xml_escape(t.title) + "</h2>\n";
-  const std::string note = reading_note(t.file, t.external);
+  const std::string note = reading_note(t.file, t.words);
   if (!note.empty()) out += "<p class=\"note\">" + xml_escape(note) + "</p>\n";
   const bool cut = t.rows() > std::min(max_rows, t.table.rows.size());
   out += t.table.rows.empty() ? "<p>" + xml_escape(empty_text) + "</p>\n"

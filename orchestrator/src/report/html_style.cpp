@@ -52,6 +52,7 @@ div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em;
   table.data { font-size: 6.5pt; table-layout: auto; }
   table.data.fit-landscape-small { font-size: 5pt; }
   section:has(> .scroll > table.fit-landscape, > .scroll > table.fit-landscape-small),
+  .print-block:has(> .scroll > table.fit-landscape, > .scroll > table.fit-landscape-small),
   .scroll:has(> table.fit-landscape, > table.fit-landscape-small) { page: landscape; }
   table.data th, table.data td { white-space: normal; overflow-wrap: normal; word-break: normal; padding: 1px 2px; }
   table.data td.num { white-space: nowrap; } table.data.fit-landscape-small td.num { white-space: normal; }
@@ -65,6 +66,7 @@ div.verdict .word { font-weight: bold; } div.verdict ul { margin: 0.2em 0 0.5em;
   .scroll + p.note { break-before: avoid; }
   nav.toc { columns: 1; }
   .filter { display: none; }
+  .screen-only { display: none; }
 }
 )css";
 

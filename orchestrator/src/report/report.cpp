@@ -19,6 +19,7 @@
 #include "report/report_ensembles.h"
 #include "report/report_tables.h"
 #include "report/series_page.h"
+#include "report/series_vocabulary.h"
 #include "report/stability_section.h"
 
 namespace gridfree {
@@ -108,7 +109,7 @@ ReportFiles write_study_report(const StudyReportData& data, const std::filesyste
                                const StopRequested& stop) {
   return write_study_report(data, out_dir,
                             library_extrapolator({data.extrapolation_method, data.p_low, data.p_high, "inverse_h",
-                                                                  data.expected_order}),
+                                                  data.expected_order, study_vocabulary(data.series).h_symbol}),
                             stop);
 }
 

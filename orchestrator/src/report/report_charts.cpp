@@ -8,6 +8,7 @@
 #include "report/chart_rde_bands.h"
 #include "report/series_concerns.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -26,11 +27,18 @@ void add_speed_accuracy(std::vector<NamedChart>& out, const std::vector<SeriesSu
                    "RDE is the lowest front point left of it.",
                    std::move(cpu), {}});
   }
-  Chart work = speed_accuracy_chart(series, CostMeasure::cell_iterations);
+  // Machine-independent: cells × iterations, or the cells alone when the
+  // case's results report no iterations (never a chart of zeros).
+  const CaseVocabulary words = study_vocabulary(series);
+  Chart work = speed_accuracy_chart(series, words.iterations_counted ? CostMeasure::cell_iterations : CostMeasure::cells);
   if (!work.series.empty()) {
     if (!note.empty()) work.note = note + (work.note.empty() ? "" : ". " + work.note);
     out.push_back({"speed_accuracy_work.svg",
-                   "The same with the machine-independent cost cells × outer iterations.", std::move(work), {}});
+                   words.iterations_counted
+                       ? "The same with the machine-independent cost cells × " + words.iteration + "s."
+                       : "The same against the number of cells, a machine-independent size: the code reports no "
+                         "iteration counts, so cells × iterations cannot be formed.",
+                   std::move(work), {}});
   }
 }
 
@@ -74,8 +82,10 @@ std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, s
                                      ReportLayout layout, double p_low, double p_high) {
   std::vector<NamedChart> out;
   if (layout == ReportLayout::full_page) {
+    const std::string reference = study_vocabulary(series).reference_rde;
     out.push_back({"fig2_rde.svg",
-                   "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better; FM18 found < 4% everywhere.",
+                   "RDE of every grid of every series (docs/PHYSICS.md §8): lower is better" +
+                       (reference.empty() ? std::string(".") : "; " + reference + "."),
                    rde_chart(series, target_rde), {}});
     add_speed_accuracy(out, series, "");
     return out;
@@ -87,7 +97,8 @@ std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, s
     out.push_back({"fig2_rde_" + name + ".svg",
                    "RDE of every grid (docs/PHYSICS.md §8), aggregated " +
                        (factor.empty() ? std::string("over all series") : "by " + factor) +
-                       ": the median and the 10–90 % band at each Δ*; each series' grids with their RDE are in the grids "
+                       ": the median and the 10–90 % band at each " + study_vocabulary(series).h_symbol +
+                       "; each series' grids with their RDE are in the grids "
                        "table of its page.",
                    rde_band_chart(series, factor, target_rde), {}});
   }
@@ -111,9 +122,9 @@ std::vector<NamedChart> study_charts(const std::vector<SeriesSummary>& series, s
 std::vector<NamedChart> series_charts(const std::vector<SeriesSummary>& series, std::size_t i) {
   std::vector<NamedChart> out;
   const std::string slug = series_slug(series[i], i);
-  const bool external = !series[i].series.quantity.empty();
+  const CaseVocabulary words = series_vocabulary(series[i].series);
   out.push_back({"fig1_" + slug + ".svg",
-                 (external ? series[i].series.quantity + " against h" : std::string("DP* against Δ*")) + " for " +
+                 words.quantity_symbol + " against " + words.h_symbol + " for " +
                      series[i].label + ", with the fits, f0 and U.",
                  series_chart(series[i], i), {}});
   if (series[i].extrapolation && !series[i].extrapolation->gci.empty()) {

@@ -9,6 +9,7 @@
 #include "report/chart_common.h"
 #include "report/report_tables.h"
 #include "report/verdict_counts.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -99,14 +100,17 @@ ReportContent build_report_content(const StudyReportData& data, const Extrapolat
     c.grids_table = {"grids.csv", "Every grid", grids_table(c.series)};
   }
   c.failures_table = {"failures.csv", "Failures", failures_table(c.series)};
-  const bool external = !c.series.empty() && std::all_of(c.series.begin(), c.series.end(), [](const SeriesSummary& s) {
-    return !s.series.quantity.empty();
-  });
-  c.series_table.external = c.grids_table.external = c.failures_table.external = external;
   c.coverage_table = {"coverage.csv", "Coverage self-check", coverage_table(c.series)};
   c.alignment = alignment_lines(data.alignment, c.series);
   c.alignment_table = {"alignment.csv", "Alignment check", alignment_table(c.alignment)};
-  c.verdict_count_table = {"verdict_counts.csv", "Verdicts per factor level", verdict_count_table(c.series)};
+  // Per factor level only when some factor has levels to count.
+  Table counts = verdict_count_table(c.series);
+  c.verdict_count_table = {"verdict_counts.csv", counts.rows.size() > 1 ? "Verdicts per factor level" : "Verdicts",
+                           std::move(counts)};
+  const CaseVocabulary words = study_vocabulary(c.series);
+  for (NamedTable* t : {&c.series_table, &c.differences_table, &c.cost_table, &c.gci_table, &c.grids_table,
+                        &c.failures_table, &c.coverage_table, &c.verdict_count_table})
+    t->words = words;
   if (c.layout == ReportLayout::summary) {
     c.charts = study_charts(c.series, data.target_rde, c.layout, data.p_low, data.p_high);
     for (std::size_t i = 0; i < c.series.size(); ++i) c.series_table.table.rows[i][0].href = series_page_file(c, i);

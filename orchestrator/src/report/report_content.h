@@ -18,6 +18,7 @@
 #include "report/report_layout.h"
 #include "report/series_summary.h"
 #include "report/table.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 
@@ -29,7 +30,9 @@ struct NamedTable {
   // CSV is written series by series (report.cpp); this is the whole count.
   std::size_t total_rows = 0;
   std::size_t rows() const { return total_rows > table.rows.size() ? total_rows : table.rows.size(); }
-  bool external = false;  // an external study's table: its reading note names the quantity and h
+  // The study's words (study/case_vocabulary.h): the reading note names the
+  // case's quantity and h, its model-form factors and iterations in them.
+  CaseVocabulary words = case_vocabulary(CaseKind::particle_bed);
 };
 
 struct ReportContent {

@@ -3,19 +3,16 @@
 #include "report/report_data.h"
 
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
 // "PC1 superbee fwhm6 bvk"; a centroid-deposition series shows "centroid"
 // instead of the (unused) filter width, and any other non-default
 // deposition is appended.
-std::string SeriesData::value_axis() const {
-  return quantity.empty() ? "DP* = Δp / (ρ_{g} U_{0}^{2})" : quantity_label;
-}
+std::string SeriesData::value_axis() const { return series_vocabulary(*this).quantity_meaning; }
 
-std::string SeriesData::h_axis() const {
-  return quantity.empty() ? "Δ* (cell size / particle diameter)" : h_label;
-}
+std::string SeriesData::h_axis() const { return series_vocabulary(*this).h_meaning; }
 
 std::string SeriesData::label() const {
   if (!quantity.empty()) {  // "cavity scheme=QUICK kinetic_energy"

@@ -5,6 +5,7 @@
 #include "report/atomic_file.h"
 #include "report/report_content.h"
 #include "report/text_format.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 
@@ -14,12 +15,12 @@ namespace {
 // difference in one of its own factors (report/ensemble_budget.h).
 std::string rule_text(const EnsembleSection& e) {
   const bool external = !e.configs.empty() && e.configs.front().external();
-  return std::string(
-             "f0 is averaged over every instance that has one, whatever its verdict (a configuration where not every "
-             "instance converged is flagged); U and RDE at a Δ* over the instances with a value there. Spread: "
-             "sample standard deviation s, standard error s/√n, min–max. Budget at each Δ*: discretization = "
-             "ensemble-mean RDE (a ~95 % bound), model form = the largest relative difference of the ensemble-mean "
-             "f0 to a configuration differing only in ") +
+  const std::string h = case_vocabulary(external ? CaseKind::external : CaseKind::particle_bed).h_symbol;
+  return "f0 is averaged over every instance that has one, whatever its verdict (a configuration where not every "
+         "instance converged is flagged); U and RDE at a " + h + " over the instances with a value there. Spread: "
+         "sample standard deviation s, standard error s/√n, min–max. Budget at each " + h + ": discretization = "
+         "ensemble-mean RDE (a ~95 % bound), model form = the largest relative difference of the ensemble-mean "
+         "f0 to a configuration differing only in " +
          (external ? "one of the study's factors (same quantity)" : "drag law or filter width") +
          ", instance spread = s/|mean f0|; the largest of the three dominates.";
 }
@@ -76,7 +77,11 @@ Table ensemble_summary_table(const std::vector<EnsembleConfig>& configs) {
 Table ensemble_budget_table(const std::vector<EnsembleConfig>& configs, const std::vector<BudgetRow>& rows) {
   Table t;
   t.columns = {{"configuration", "Configuration"},
-               {"delta_star", "Δ*", false, true},
+               {"delta_star",
+                case_vocabulary(!configs.empty() && configs.front().external() ? CaseKind::external
+                                                                               : CaseKind::particle_bed)
+                    .h_symbol,
+                false, true},
                {"instances_with_u", "Instances", false, true},
                {"u_mean", "Mean U", false, true},
                {"rde_mean", "Discretization (mean RDE)", false, true},

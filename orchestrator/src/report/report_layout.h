@@ -17,7 +17,7 @@ namespace gridfree {
 
 inline constexpr std::size_t kFullPageSeries = 24;   // the largest study shown whole on one page
 inline constexpr std::size_t kShownRows = 50;        // rows of a long table on the summary page
-inline constexpr std::size_t kWorstSeries = 20;      // series listed under "Worst series"
+inline constexpr std::size_t kWorstSeries = 20;      // Markdown: series listed under "Series that need a look"
 inline constexpr std::size_t kShownWarnings = 20;    // attention lines before "… and N more"
 inline constexpr std::size_t kSpeedAccuracyWorst = 4;    // speed-accuracy: series that most need a look
 inline constexpr std::size_t kSpeedAccuracyCheapest = 3; // … and the cheapest converged ones

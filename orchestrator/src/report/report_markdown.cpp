@@ -8,6 +8,8 @@
 #include "report/report_about.h"
 #include "report/report_content.h"
 #include "report/report_summary.h"
+#include "report/report_layout.h"
+#include "report/series_concerns.h"
 #include "report/series_coverage.h"
 #include "report/stability_section.h"
 #include "report/text_format.h"
@@ -22,7 +24,7 @@ namespace {
 std::string table_section(const NamedTable& t, const std::string& empty_text,
                           std::size_t max_rows = std::numeric_limits<std::size_t>::max()) {
   std::string out = "## " + t.title + "\n\n";
-  const std::string note = reading_note(t.file, t.external);
+  const std::string note = reading_note(t.file, t.words);
   if (!note.empty()) out += note + "\n\n";
   const bool cut = t.rows() > std::min(max_rows, t.table.rows.size());
   out += t.table.rows.empty() ? empty_text + "\n" : to_markdown(cut ? first_rows(t.table, max_rows) : t.table);
@@ -38,6 +40,29 @@ void verdict_lines(std::string& out, const VerdictItem& v, const std::string& hr
          v.headline + "\n";
   for (const auto& r : v.reasons) out += "  - " + r + "\n";
   for (const auto& n : v.notes) out += "  - Note: " + n + "\n";
+}
+
+// The series that need a look with their verdicts, ranked as the Attention
+// list ranks them (series_concerns.h: failed or stalled grids, a missed
+// coverage self-check, a verdict other than converged, an order against the
+// declared one), the first kWorstSeries and "… and N more".
+std::string needs_a_look_markdown(const ReportContent& c) {
+  const auto concerns = series_concerns(c.series, c.data.p_low, c.data.p_high);
+  std::string out = "### Series that need a look, worst first\n\n";
+  if (concerns.empty()) return out + "None: every series is converged on all its grids.\n";
+  const std::size_t shown = std::min(concerns.size(), kWorstSeries);
+  for (std::size_t k = 0; k < shown; ++k) {
+    const std::size_t i = concerns[k].series;
+    VerdictItem item = verdict_item(c.series[i]);
+    std::string why;
+    for (const auto& t : concerns[k].concerns) why += (why.empty() ? "" : "; ") + t;
+    item.notes.insert(item.notes.begin(), "Needs a look: " + why);
+    verdict_lines(out, item, series_page_file(c, i));
+  }
+  if (concerns.size() > shown)
+    out += "- … and " + std::to_string(concerns.size() - shown) + " more of " + std::to_string(concerns.size()) +
+           " (series.csv: `attention` = yes, `concerns` says why; each series' page)\n";
+  return out;
 }
 
 std::string chart_link(const NamedChart& c) {
@@ -56,11 +81,13 @@ std::string render_markdown(const ReportContent& c) {
   out += "## Verdicts\n\n" + reading_note("verdicts") + "\n\n";
   if (summary) {
     out += to_markdown(c.verdict_count_table.table) + "\nCSV: [" + c.verdict_count_table.file + "](" +
-           c.verdict_count_table.file + ")\n\n### Worst series\n\n";
-    for (std::size_t i : worst_series(c.series, kWorstSeries)) verdict_lines(out, verdict_item(c.series[i]), series_page_file(c, i));
+           c.verdict_count_table.file + ")\n\n";
+    out += needs_a_look_markdown(c);
   } else {
     for (const auto& v : verdict_items(c)) verdict_lines(out, v);
-    out += "\nCounts per factor level: [" + c.verdict_count_table.file + "](" + c.verdict_count_table.file + ")\n";
+    out += std::string(c.verdict_count_table.table.rows.size() > 1 ? "\nCounts per factor level: ["
+                                                                    : "\nCounts: [") +
+           c.verdict_count_table.file + "](" + c.verdict_count_table.file + ")\n";
   }
   out += "\n";
   out += adaptive_section_markdown(c.data.adaptive_decisions);

@@ -7,6 +7,7 @@
 #include "report/series_coverage.h"
 #include "extrap/value_format.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -17,7 +18,9 @@ std::vector<std::pair<std::string, std::string>> summary_items(const ReportConte
       {"Status", d.status},
       {"Submitted", d.submitted_at},
       {"Finished", d.finished_at},
-      {"Design", d.baseline_description},
+      // A design is worth naming only when the series vary some factor (an
+      // external study without factors is not "factorial").
+      {"Design", c.verdict_count_table.table.rows.size() > 1 ? d.baseline_description : std::string()},
       {"Extrapolation", d.extrapolation_method + " (power law accepted for " + format_g(d.p_low, 4) +
                             " ≤ p ≤ " + format_g(d.p_high, 4) + ")"},
       {"Measured coverage", measured_coverage_line(d.extrapolation_method, d.expected_order.has_value())},
@@ -54,7 +57,7 @@ VerdictItem verdict_item(const SeriesSummary& s) {
     const std::optional<double> u0 = s.extrapolation->u0;
     item.headline = "f0 = " + (u0 ? format_with_uncertainty(*f0, u0) + " (U₀)" : format_to_uncertainty_digits(*f0, u));
     if (!grids.empty())
-      item.headline += std::string("; finest grid ") + (s.series.quantity.empty() ? "Δ*" : "h") + " = " +
+      item.headline += "; finest grid " + series_vocabulary(s.series).h_symbol + " = " +
                        format_cell_size(grids.front().h) + ": f₁ = " +
                        format_with_uncertainty(grids.front().f, u) +
                        (u ? " (U₁, RDE " + format_percent(grids.front().rde) + ")" : "");
@@ -75,7 +78,8 @@ std::vector<VerdictItem> verdict_items(const ReportContent& c) {
   return out;
 }
 
-std::string reading_note(const std::string& section, bool external) {
+std::string reading_note(const std::string& section, const CaseVocabulary& words) {
+  const bool external = words.kind == CaseKind::external;
   if (section == "alignment.csv") return alignment_reading_note();
   if (section == "series.csv") {
     return std::string("f0 is the extrapolated (grid-free) ") + (external ? "value of the series' quantity" : "DP*") +
@@ -104,8 +108,8 @@ std::string reading_note(const std::string& section, bool external) {
   }
   if (section == "differences.csv") {
     return "Pairs of series that differ in exactly one factor, and 2|f0a − f0b|/(f0a + f0b): the effect of "
-           "that factor (model form: drag law, filter width, particle configuration) on the grid-free "
-           "answer. It is beyond the uncertainty when |f0a − f0b| > √(U_a² + U_b²), U of each series' finest "
+           "that factor" + (words.model_form.empty() ? std::string() : " (model form: " + words.model_form + ")") +
+           " on the grid-free answer. It is beyond the uncertainty when |f0a − f0b| > √(U_a² + U_b²), U of each series' finest "
            "grid (shown relative to the mean f0). Differences between series that are not both converged "
            "are marked ⚠: their f0 may move when grids are added. A factor of more than 12 levels (the "
            "instances of a large ensemble) pairs no series: the ensemble section gives their spread.";
@@ -121,8 +125,10 @@ std::string reading_note(const std::string& section, bool external) {
   }
   if (section == "cost.csv") {
     return "For each target RDE, the cheapest converged grid (least CPU time) whose RDE meets it and "
-           "stays within it on every finer grid, with its cost in CPU seconds (this machine), in cells × "
-           "iterations (any machine) and its peak memory. RDE is the a-priori error estimate U/|f0| of "
+           "stays within it on every finer grid, with its cost in CPU seconds (this machine), " +
+           (words.iterations_counted ? "in cells × " + words.iteration + "s (any machine) "
+                                     : std::string("its cells (the code reports no iterations) ")) +
+           "and its peak memory. RDE is the a-priori error estimate U/|f0| of "
            "that grid from the series' extrapolation; \"none of the run grids\" means a finer grid is "
            "needed. On oscillatory convergence a coarse grid can land near f0 by chance: its small RDE "
            "does not count while a finer grid misses the target. A series that is not `converged` "

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "report/report_content.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 
@@ -29,7 +30,9 @@ VerdictItem verdict_item(const SeriesSummary& series);
 std::vector<VerdictItem> verdict_items(const ReportContent& content);  // every series, in order
 
 // One short paragraph per section on how to read it (keyed by CSV/section name).
-// `external`: an external study's tables (the declared quantity and h, not DP* and Δ*).
-std::string reading_note(const std::string& section, bool external = false);
+// `words`: the study's case words (an external study's declared quantity
+// and h, not DP* and Δ*; no particle-bed model form; iterations if counted).
+std::string reading_note(const std::string& section,
+                         const CaseVocabulary& words = case_vocabulary(CaseKind::particle_bed));
 
 }  // namespace gridfree

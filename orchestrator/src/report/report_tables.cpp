@@ -10,6 +10,7 @@
 #include "extrap/value_format.h"
 #include "report/series_concerns.h"
 #include "report/series_coverage.h"
+#include "report/series_vocabulary.h"
 #include "report/stability_map.h"
 #include "report/text_format.h"
 
@@ -25,6 +26,12 @@ Column prose_col(std::string name, std::string title = {}) {
 }
 Column num_col(std::string name, std::string title = {}, bool csv_only = false) {
   return {std::move(name), std::move(title), csv_only, true};
+}
+// Shown on screen, not printed: fit details series.csv keeps, so the printed
+// series table fits a portrait page.
+Column screen_only(Column c) {
+  c.screen_only = true;
+  return c;
 }
 
 bool all_external(const std::vector<SeriesSummary>& series);
@@ -89,27 +96,37 @@ std::string series_status(const SeriesSummary& s) {
   return status;
 }
 
-// An external study's series (docs/EXTERNAL.md): tables say h and value.
+// An external study's series (docs/EXTERNAL.md): its own factor columns.
 bool all_external(const std::vector<SeriesSummary>& series) {
   return !series.empty() && std::all_of(series.begin(), series.end(),
                                         [](const SeriesSummary& s) { return !s.series.quantity.empty(); });
+}
+
+// The case's h and value columns: "delta_star" shown "Δ*", or "h".
+Column h_col(const CaseVocabulary& v, const std::string& suffix = {}) {
+  return num_col(v.h_column + suffix, v.h_symbol + suffix);
+}
+Column value_col(const CaseVocabulary& v) {
+  return num_col(v.value_column, v.value_column == "value" ? std::string() : v.quantity_symbol);
 }
 
 }  // namespace
 
 Table grids_table(const std::vector<SeriesSummary>& series) {
   Table t;
-  const bool external = all_external(series);  // headers name h and each series' own quantity
+  // The case's words: an external study's CSV names h and the value (its
+  // quantity is in the series column), a count of cells, no nx × ny × nz.
+  const CaseVocabulary v = study_vocabulary(series);
+  const bool external = all_external(series);
   t.columns.push_back(text_col("series"));
   const std::vector<std::string> factor_names = external_factor_names(series);
   add_factor_columns(t.columns, factor_names, external);
   t.columns.push_back(text_col("job_hash", {}, true));
-  // An external study's CSV names h and the value (its quantity is in the series column).
-  t.columns.push_back(external ? num_col("h") : num_col("delta_star", "Δ*"));
+  t.columns.push_back(h_col(v));
   for (const char* n : {"nx", "ny", "nz"}) t.columns.push_back(num_col(n, {}, true));
   t.columns.push_back(num_col("cells"));
   t.columns.push_back(text_col("status"));
-  t.columns.push_back(external ? num_col("value") : num_col("dp_star", "DP*"));
+  t.columns.push_back(value_col(v));
   t.columns.push_back(num_col("fhat", "fit", true));
   t.columns.push_back(num_col("u", "U"));
   t.columns.push_back(num_col("rde", "RDE"));
@@ -127,11 +144,9 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
       add_factor_cells(row, s.series, factor_names, external);
       row.push_back(text_cell(g.job_hash));
       row.push_back(number_cell(g.delta_star, 4));
-      row.push_back(integer_cell(g.nx));
-      row.push_back(integer_cell(g.ny));
-      row.push_back(integer_cell(g.nz));
       const long long cells = static_cast<long long>(g.nx) * g.ny * g.nz;
-      if (external)  // the declared cell count, not a "400×1×1" box
+      for (int n : {g.nx, g.ny, g.nz}) row.push_back(v.cells_per_direction ? integer_cell(n) : text_cell(""));
+      if (!v.cells_per_direction)  // the declared cell count, not a "400×1×1" box
         row.push_back(integer_cell(cells));
       else
         row.push_back({std::to_string(cells), std::to_string(g.nx) + "×" + std::to_string(g.ny) + "×" +
@@ -142,7 +157,8 @@ Table grids_table(const std::vector<SeriesSummary>& series) {
       row.push_back(number_cell(e ? e->u : std::nullopt, 3));
       row.push_back(percent_cell(e ? e->rde : std::nullopt));
       row.push_back(percent_cell(is_converged(g) ? s.relative_error(*g.dp_star) : std::nullopt));
-      row.push_back(integer_cell(g.iterations));
+      // A code that reports no iterations leaves the cell empty, not 0.
+      row.push_back(v.iterations_counted ? integer_cell(g.iterations) : text_cell(""));
       row.push_back(number_cell(g.wall_s, 3));
       row.push_back(number_cell(g.cpu_s, 3));
       row.push_back(number_cell(g.peak_rss_mb, 4));
@@ -173,18 +189,18 @@ Table series_table(const std::vector<SeriesSummary>& series, double p_low, doubl
   t.columns.push_back(text_col("method"));
   t.columns.push_back(num_col("u0", "U0", true));
   t.columns.push_back(num_col("p"));
-  t.columns.push_back(num_col("c"));
-  t.columns.push_back(num_col("c1"));
-  t.columns.push_back(num_col("c2"));
+  t.columns.push_back(screen_only(num_col("c")));
+  t.columns.push_back(screen_only(num_col("c1")));
+  t.columns.push_back(screen_only(num_col("c2")));
   t.columns.push_back(num_col("f0_power", {}, true));
   t.columns.push_back(num_col("p_power", {}, true));
   t.columns.push_back(text_col("p_found", {}, true));
   t.columns.push_back(num_col("f0_mixed", {}, true));
-  t.columns.push_back(num_col("sigma_re", "σ_RE"));
-  t.columns.push_back(num_col("data_range", "R_f"));
+  t.columns.push_back(screen_only(num_col("sigma_re", "σ_RE")));
+  t.columns.push_back(screen_only(num_col("data_range", "R_f")));
   t.columns.push_back(num_col("sigma_re_over_rf", "σ_RE/R_f"));
   t.columns.push_back(text_col("good_fit", "good fit"));
-  t.columns.push_back(num_col("fs", "Fs"));
+  t.columns.push_back(screen_only(num_col("fs", "Fs")));
   // Long texts are CSV-only here; the report prints them per series in its
   // verdict section, so the table keeps to the page width.
   t.columns.push_back(text_col("verdict_reasons", {}, true));
@@ -274,9 +290,9 @@ Table differences_table(const std::vector<SeriesSummary>& series,
 
 Table gci_table(const std::vector<SeriesSummary>& series, double p_low, double p_high) {
   Table t;
-  const bool external = all_external(series);  // h as declared, not Δ*
-  t.columns = {text_col("series"),        num_col("h1", external ? "h1" : "Δ*1"), num_col("h2", external ? "h2" : "Δ*2"),
-               num_col("h3", external ? "h3" : "Δ*3"), num_col("p"),                  num_col("f_ext", "φ_ext"),
+  const std::string h = study_vocabulary(series).h_symbol;  // h as declared, or Δ*
+  t.columns = {text_col("series"),        num_col("h1", h + "1"), num_col("h2", h + "2"),
+               num_col("h3", h + "3"),    num_col("p"),           num_col("f_ext", "φ_ext"),
                num_col("gci_fine", "GCI_fine"), text_col("convergence"), text_col("status"), text_col("usable"),
                num_col("f0", "f0 (regression)"), num_col("f_ext_vs_f0", "(φ_ext−f0)/f0")};
   for (const auto& s : series) {
@@ -298,9 +314,8 @@ Table gci_table(const std::vector<SeriesSummary>& series, double p_low, double p
 
 Table failures_table(const std::vector<SeriesSummary>& series) {
   Table t;
-  const bool external = all_external(series);
-  t.columns = {text_col("series"), external ? num_col("h") : num_col("delta_star", "Δ*"), num_col("cells"),
-               text_col("status"), external ? num_col("value") : num_col("dp_star", "DP*"), prose_col("reason"),
+  const CaseVocabulary v = study_vocabulary(series);
+  t.columns = {text_col("series"), h_col(v), num_col("cells"), text_col("status"), value_col(v), prose_col("reason"),
                text_col("job_hash", {}, true)};
   for (const auto& s : series) {
     for (const GridPoint& g : s.series.grids) {
@@ -326,7 +341,7 @@ Table coverage_table(const std::vector<SeriesSummary>& series) {
                num_col("coverage"),
                num_col("worst", "max miss/U1"),
                text_col("status", {}, true),
-               prose_col("missed", "windows that missed (Δ* coarse–fine)")};
+               prose_col("missed", "windows that missed (" + study_vocabulary(series).h_symbol + " coarse–fine)")};
   for (const auto& s : series) {
     if (!s.coverage) continue;
     const CoverageCheck& c = *s.coverage;
@@ -334,7 +349,7 @@ Table coverage_table(const std::vector<SeriesSummary>& series) {
     t.rows.push_back({text_cell(s.label), text_cell(s.verdict), integer_cell(static_cast<long long>(s.h.size())),
                       number_cell(c.reference, 8), integer_cell(c.judged), integer_cell(c.covered),
                       integer_cell(c.f0_covered), percent_cell(coverage_rate(c), 3),
-                      number_cell(worst_distance(c), 3), text_cell(status), text_cell(missed_windows(c))});
+                      number_cell(worst_distance(c), 3), text_cell(status), text_cell(missed_windows(c, series_vocabulary(s.series).h_symbol))});
   }
   return t;
 }

@@ -8,6 +8,7 @@
 #include "extrap/value_format.h"
 #include "report/stability_map.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 namespace {
@@ -26,7 +27,7 @@ std::string failed_grids_text(const SeriesSummary& s, bool& stalled) {
     if (!is_failed(g)) continue;
     const std::string outcome = grid_outcome(g);
     stalled = stalled || outcome == "stalled";
-    parts.push_back(outcome + " at " + (s.series.quantity.empty() ? "Δ* " : "h ") + format_cell_size(g.delta_star));
+    parts.push_back(outcome + " at " + cell_size_text(series_vocabulary(s.series), g.delta_star));
   }
   std::string out = std::to_string(s.failed) + " failed grid" + (s.failed == 1 ? "" : "s") + " (";
   for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? ", " : "") + parts[i];

@@ -8,6 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "report/series_vocabulary.h"
 #include "report/series_summary.h"
 #include "extrap/value_format.h"
 #include "report/text_format.h"
@@ -71,12 +72,12 @@ std::optional<CoverageCheck> series_coverage(const SeriesSummary& s, const Extra
   }
 }
 
-std::string missed_windows(const CoverageCheck& c) {
+std::string missed_windows(const CoverageCheck& c, const std::string& h_symbol) {
   std::string out;
   for (auto it = c.windows.rbegin(); it != c.windows.rend(); ++it) {
     if (!it->covered || *it->covered) continue;
     if (!out.empty()) out += "; ";
-    out += "Δ* " + format_cell_size(it->h_coarse) + "–" + format_cell_size(it->h_fine);
+    out += h_symbol + " " + format_cell_size(it->h_coarse) + "–" + format_cell_size(it->h_fine);
     if (it->distance) out += " (" + format_g(*it->distance, 2) + " U₁)";
   }
   return out;
@@ -128,7 +129,7 @@ std::vector<std::string> coverage_warnings(const std::vector<SeriesSummary>& ser
   std::vector<std::string> out;
   for (const auto& s : series) {
     if (!s.coverage || !s.coverage->below_promise()) continue;
-    out.push_back(s.label + ": " + s.coverage->summary() + "; missed: " + missed_windows(*s.coverage) +
+    out.push_back(s.label + ": " + s.coverage->summary() + "; missed: " + missed_windows(*s.coverage, series_vocabulary(s.series).h_symbol) +
                   ". Its U may be too narrow on coarse grids: look at the coverage table before trusting it.");
   }
   return out;

@@ -33,8 +33,9 @@ std::optional<CoverageCheck> coverage_of(const std::vector<double>& h, const std
 // pending grids, fewer than 6 converged grids or no extrapolation.
 std::optional<CoverageCheck> series_coverage(const SeriesSummary& s, const Extrapolator& extrapolate);
 
-// "Δ* 3.3–1.93 (1.7 U₁)" for every window that missed, coarsest first.
-std::string missed_windows(const CoverageCheck& c);
+// "Δ* 3.3–1.93 (1.7 U₁)" for every window that missed, coarsest first;
+// `h_symbol` the case's (study/case_vocabulary.h).
+std::string missed_windows(const CoverageCheck& c, const std::string& h_symbol = "Δ*");
 // The largest |f0_ref − f_1w| / U_1w over the judged windows.
 std::optional<double> worst_distance(const CoverageCheck& c);
 // covered / judged, empty without judged windows.

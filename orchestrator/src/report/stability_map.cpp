@@ -8,6 +8,7 @@
 
 #include "extrap/value_format.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -19,8 +20,6 @@ bool stab_starts_with(const std::string& text, const char* prefix) { return text
 // nominal Δ* in domains of different sizes share a column.
 double stability_column_of(double delta_star) { return std::stod(format_cell_size(delta_star)); }
 
-// "Δ* 0.5", or an external series' "h 0.005" (its declared h).
-std::string stability_delta_text(double h, bool external) { return (external ? "h " : "Δ* ") + format_cell_size(h); }
 
 // What a failure says in a line: the outcome word and the worker's reason.
 std::string stability_failure_text(const GridPoint& g, const std::string& outcome) {
@@ -73,19 +72,20 @@ std::string stability_line(const SeriesSummary& s) {
     }
   }
   std::string line;
-  const bool ext = !s.series.quantity.empty();
-  const auto at = [ext](double h) { return stability_delta_text(h, ext); };
+  // "Δ* 0.5", or an external series' "h 0.005" (its declared h).
+  const CaseVocabulary words = series_vocabulary(s.series);
+  const auto at = [&words](double h) { return cell_size_text(words, h); };
   if (!first_bad && !last_ok) return pending ? "no grid finished yet" : "no grids";
   if (!first_bad) {
-    line = "converges on every finished grid, down to " + at(last_ok->delta_star);
+    line = "solved on every finished grid, down to " + at(last_ok->delta_star);
   } else {
     const std::string why = stability_failure_text(*first_bad, grid_outcome(*first_bad));
-    line = last_ok ? "converges down to " + at(last_ok->delta_star) + "; first failure at " +
+    line = last_ok ? "solved down to " + at(last_ok->delta_star) + "; first failure at " +
                          at(first_bad->delta_star) + ": " + why
                    : "fails from the coarsest grid: first failure at " + at(first_bad->delta_star) + ": " +
                          why;
     if (failures > 1) line += "; " + std::to_string(failures) + " failed grids in all";
-    if (later_ok > 0) line += "; " + std::to_string(later_ok) + " finer grid(s) converge again";
+    if (later_ok > 0) line += "; " + std::to_string(later_ok) + " finer grid(s) solved again";
   }
   if (pending) line += " (" + std::to_string(pending) + " grid(s) not finished)";
   return line;
@@ -122,8 +122,7 @@ MethodTally method_tally(const SeriesSummary& s, double p_low, double p_high) {
 StabilityMap stability_map(const std::vector<SeriesSummary>& series, double p_low, double p_high,
                            std::size_t max_rows) {
   StabilityMap m;
-  m.external = !series.empty() && std::all_of(series.begin(), series.end(),
-                                              [](const SeriesSummary& x) { return !x.series.quantity.empty(); });
+  m.words = study_vocabulary(series);
   for (const auto& s : series)
     for (const GridPoint& g : s.series.grids) m.columns.push_back(stability_column_of(g.delta_star));
   std::sort(m.columns.begin(), m.columns.end(), std::greater<>());

@@ -23,6 +23,7 @@
 
 #include "report/report_data.h"
 #include "report/series_summary.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 
@@ -67,7 +68,7 @@ struct StabilityMap {
   int omitted = 0;                    // rows left out by the cap (all of them converged on every grid, if
                                       // the cap is not smaller than the number of series with a failure)
   int series_total = 0, series_with_failures = 0;
-  bool external = false;              // an external study's: columns are its declared h, not Δ*
+  CaseVocabulary words = case_vocabulary(CaseKind::particle_bed);  // the study's: h or Δ*, iterations counted?
 };
 
 inline constexpr std::size_t kStabilityMapMaxRows = 60;

@@ -9,6 +9,7 @@
 #include "report/atomic_file.h"
 #include "extrap/value_format.h"
 #include "report/text_format.h"
+#include "report/series_vocabulary.h"
 
 namespace gridfree {
 
@@ -28,12 +29,13 @@ Column stab_num(std::string name, std::string title = {}) {
   return c;
 }
 
-// A cell's short text in the map: the outer iterations of a converged grid,
-// else a short word.
-std::string stability_cell_text(const StabilityCell& c) {
+// A cell's short text in the map: the outer iterations of a solved grid
+// ("✓" alone when the code reports none), else a short word.
+std::string stability_cell_text(const StabilityCell& c, bool iterations_counted) {
   if (!c.present) return "";
-  if (c.remedy_from > 0) return (c.outcome == "converged" ? "✓ " + std::to_string(c.iterations) : c.outcome) + " R";
-  if (c.outcome == "converged") return "✓ " + std::to_string(c.iterations);
+  const std::string solved = iterations_counted ? "✓ " + std::to_string(c.iterations) : "✓";
+  if (c.remedy_from > 0) return (c.outcome == "converged" ? solved : c.outcome) + " R";
+  if (c.outcome == "converged") return solved;
   if (c.outcome == "iteration_cap") return "cap";
   if (c.outcome == "timed_out") return "timeout";
   if (c.outcome == "pending") return "…";
@@ -44,15 +46,16 @@ struct OutcomeStyle {
   const char* outcome;
   const char* fill;
   const char* meaning;
+  const char* any_code = nullptr;  // the meaning for a case that is not the worker's (no numerics.*, no ε_s)
 };
 
 // Colour-blind-safe fills (Okabe–Ito, lightened for the converged cells).
 constexpr OutcomeStyle kOutcomeStyles[] = {
-    {"converged", "#c7eadb", "solved (✓ outer iterations)"},
-    {"stalled", "#f0e442", "stalled (a limit cycle: numerics.stall_window)"},
-    {"iteration_cap", "#e69f00", "cap: not converged at numerics.max_iterations"},
+    {"converged", "#c7eadb", "solved"},  // the legend adds "(✓ <iterations>)" when they are counted
+    {"stalled", "#f0e442", "stalled (a limit cycle: numerics.stall_window)", "stalled"},
+    {"iteration_cap", "#e69f00", "cap: not converged at numerics.max_iterations", "cap: not converged"},
     {"diverged", "#d55e00", "diverged"},
-    {"invalid", "#cc79a7", "invalid (no solution, e.g. ε_s ≥ 1 in a cell)"},
+    {"invalid", "#cc79a7", "invalid (no solution, e.g. ε_s ≥ 1 in a cell)", "invalid (no solution)"},
     {"timed_out", "#56b4e9", "timed out"},
     {"failed", "#999999", "failed"},
     {"pending", "#ffffff", "not finished"},
@@ -98,13 +101,18 @@ std::string stability_omitted_note(const StabilityMap& m) {
          kStabilityCsv + ").";
 }
 
+// The legend's meaning of an outcome in the study's words.
+std::string outcome_meaning(const OutcomeStyle& s, const CaseVocabulary& words) {
+  if (std::string(s.outcome) == "converged" && words.iterations_counted) return "solved (✓ " + words.iteration + "s)";
+  return words.particle_factors || s.any_code == nullptr ? s.meaning : s.any_code;
+}
+
 std::string stability_intro(const StabilityMap& m) {
-  return std::string("Stability: the outcome of every grid (one row per series, one column per ") +
-         (m.external ? "h" : "Δ*") + ", coarsest on the left). " +
-         std::to_string(m.series_with_failures) + " of " + std::to_string(m.series_total) +
-         " series have a failed grid. A solved cell (its solver converged) gives its outer iterations; hover over a "
-         "cell for the "
-         "worker's reason. The GCI of a triplet is counted usable when its convergence is monotone and its "
+  return "Stability: the outcome of every grid (one row per series, one column per " + m.words.h_symbol +
+         ", coarsest on the left). " + std::to_string(m.series_with_failures) + " of " +
+         std::to_string(m.series_total) + " series have a failed grid. A solved cell (its solver converged) " +
+         (m.words.iterations_counted ? "gives its " + m.words.iteration + "s" : std::string("is marked ✓")) +
+         "; hover over a cell for the reason the run gave. The GCI of a triplet is counted usable when its convergence is monotone and its "
          "order p lies in the study's accepted range; least squares is usable when it gave f0.";
 }
 
@@ -112,10 +120,8 @@ std::string stability_intro(const StabilityMap& m) {
 
 Table stability_grid_table(const std::vector<SeriesSummary>& series) {
   Table t;
-  const bool external = !series.empty() && std::all_of(series.begin(), series.end(), [](const SeriesSummary& x) {
-    return !x.series.quantity.empty();
-  });  // an external study's declared h
-  t.columns = {stab_text("series"), external ? stab_num("h", "h") : stab_num("delta_star", "Δ*"), stab_num("cells"),
+  const CaseVocabulary words = study_vocabulary(series);  // an external study's declared h
+  t.columns = {stab_text("series"), stab_num(words.h_column, words.h_symbol), stab_num("cells"),
                stab_text("outcome"),
                stab_num("outer_iterations", "outer iterations"), stab_text("reason", {}, true),
                stab_text("job_hash")};
@@ -127,7 +133,7 @@ Table stability_grid_table(const std::vector<SeriesSummary>& series) {
     for (const GridPoint* g : grids)
       t.rows.push_back({text_cell(s.label), number_cell(g->delta_star, 4),
                         integer_cell(static_cast<long long>(g->nx) * g->ny * g->nz), text_cell(grid_outcome(*g)),
-                        integer_cell(g->iterations),
+                        words.iterations_counted ? integer_cell(g->iterations) : text_cell(""),
                         text_cell(g->remedy_from_iteration > 0
                                       ? (g->reason.empty() ? "" : g->reason + "; ") + remedy_note(g->remedy_from_iteration)
                                       : g->reason),
@@ -152,11 +158,11 @@ Table stability_series_table(const StabilityMap& m) {
 Table stability_wide_table(const StabilityMap& m) {
   Table t;
   t.columns.push_back(stab_text("series"));
-  const std::string axis = m.external ? "h" : "Δ*", csv = m.external ? "h_" : "delta_star_";
-  for (double h : m.columns) t.columns.push_back(stab_text(csv + format_cell_size(h), axis + " " + format_cell_size(h)));
+  for (double h : m.columns)
+    t.columns.push_back(stab_text(m.words.h_column + "_" + format_cell_size(h), cell_size_text(m.words, h)));
   for (const auto& r : m.rows) {
     std::vector<Cell> row{text_cell(r.label)};
-    for (const auto& c : r.cells) row.push_back(text_cell(stability_cell_text(c)));
+    for (const auto& c : r.cells) row.push_back(text_cell(stability_cell_text(c, m.words.iterations_counted)));
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -182,7 +188,7 @@ std::string stability_svg(const StabilityMap& m) {
                     "<title>Where methods fail: outcome per series and grid</title>\n";
   for (int c = 0; c < cols; ++c)
     out += "<text x=\"" + std::to_string(label_w + c * kCellW + kCellW / 2) + "\" y=\"" + std::to_string(kTop - 8) +
-           "\" text-anchor=\"middle\">" + (m.external ? "h " : "Δ* ") + xml_escape(format_g(m.columns[std::size_t(c)], 3)) +
+           "\" text-anchor=\"middle\">" + xml_escape(cell_size_text(m.words, m.columns[std::size_t(c)])) +
            "</text>\n";
   for (int r = 0; r < rows; ++r) {
     const StabilityRow& row = m.rows[std::size_t(r)];
@@ -194,22 +200,27 @@ std::string stability_svg(const StabilityMap& m) {
       const StabilityCell& cell = row.cells[std::size_t(c)];
       if (!cell.present) continue;
       const int x = label_w + c * kCellW;
-      std::string tip = row.label + ", Δ* " + format_cell_size(cell.delta_star) + ": " + cell.outcome;
-      if (cell.outcome == "converged") tip += " in " + std::to_string(cell.iterations) + " outer iterations";
-      else if (!cell.reason.empty()) tip += ": " + cell.reason;
+      // Grid outcome words, never the verdict's: a grid is "solved".
+      std::string tip = row.label + ", " + cell_size_text(m.words, cell.delta_star) + ": ";
+      if (cell.outcome == "converged")
+        tip += "solved" + (m.words.iterations_counted
+                               ? " in " + std::to_string(cell.iterations) + " " + m.words.iteration + "s"
+                               : std::string());
+      else
+        tip += cell.outcome + (cell.reason.empty() ? std::string() : ": " + cell.reason);
       if (cell.remedy_from > 0) tip += "; " + remedy_note(cell.remedy_from);
       out += "<g class=\"cell outcome-" + cell.outcome + "\"><title>" + xml_escape(tip) + "</title><rect x=\"" +
              std::to_string(x + 1) + "\" y=\"" + std::to_string(y + 1) + "\" width=\"" + std::to_string(kCellW - 2) +
              "\" height=\"" + std::to_string(kCellH - 2) + "\" fill=\"" + outcome_style_of(cell.outcome).fill +
              "\" stroke=\"#888\" stroke-width=\"0.5\"/><text x=\"" + std::to_string(x + kCellW / 2) + "\" y=\"" +
-             std::to_string(y + 14) + "\" text-anchor=\"middle\">" + xml_escape(stability_cell_text(cell)) + "</text></g>\n";
+             std::to_string(y + 14) + "\" text-anchor=\"middle\">" + xml_escape(stability_cell_text(cell, m.words.iterations_counted)) + "</text></g>\n";
     }
   }
   int y = map_bottom + 12;
   for (const auto& s : kOutcomeStyles) {
     out += "<rect x=\"4\" y=\"" + std::to_string(y) + "\" width=\"18\" height=\"11\" fill=\"" + s.fill +
            "\" stroke=\"#888\" stroke-width=\"0.5\"/><text x=\"28\" y=\"" + std::to_string(y + 10) + "\">" +
-           xml_escape(s.meaning) + "</text>\n";
+           xml_escape(outcome_meaning(s, m.words)) + "</text>\n";
     y += kLegendRow;
   }
   if (remedy) out += "<text x=\"4\" y=\"" + std::to_string(y + 10) + "\">" + xml_escape(kRemedyLegend) + "</text>\n";
@@ -225,8 +236,10 @@ std::string stability_section_html(const ReportContent& c) {
   const std::string omitted = stability_omitted_note(m);
   out += "<figure class=\"stability-figure\"><div class=\"scroll\">\n" + stability_svg(m) + "</div>";
   if (!omitted.empty()) out += "<figcaption>" + xml_escape(omitted) + "</figcaption>";
-  out += "</figure>\n<h3 id=\"stability-table\">The map as a table</h3>\n<div class=\"scroll\">\n" +
-         to_html(stability_wide_table(m)) + "</div>\n";
+  // The table and its heading are one print block: a landscape page for a
+  // wide table, the section's text and per-series list on portrait pages.
+  out += "</figure>\n<div class=\"print-block\"><h3 id=\"stability-table\">The map as a table</h3>\n"
+         "<div class=\"scroll\">\n" + to_html(stability_wide_table(m)) + "</div></div>\n";
   out += "<h3 id=\"stability-series\">Per series: where it fails, GCI beside least squares</h3>\n<ul>\n";
   for (const auto& r : m.rows)
     out += "<li><strong>" + xml_escape(r.label) + "</strong>: " + xml_escape(r.line) + ". " +

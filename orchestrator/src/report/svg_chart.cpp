@@ -110,13 +110,27 @@ struct LabelBoxes {
       if (crosses(l, b)) return false;
     }
     boxes.push_back(b);
+    texts.push_back(b);
     return true;
   }
+  // A label moved away from its point: the box must be free and the leader
+  // from the point to it must cross no other label (it may pass a marker);
+  // both are then taken.
+  bool place_with_leader(const Box& b, const Segment& leader) {
+    for (const Box& o : texts)
+      if (crosses(leader, o)) return false;
+    if (!place(b)) return false;
+    lines.push_back(leader);
+    return true;
+  }
+  std::vector<Box> texts;  // the placed labels' boxes
 };
 
 // A point label of font 10 at the first free place around its point
-// (above right, below left, above left, below right, right, left), or ""
-// when every place collides.
+// (above right, below left, above left, below right, right, left); when
+// every one collides, farther out on rings of growing radius with a thin
+// leader line back to the point; "" only when no place in the plot is free
+// (the caller counts those and says so in the chart's note).
 std::string point_label(LabelBoxes& taken, double x, double y, const std::string& label, double font = 10.0) {
   const double w = text_width_px(label, font);
   const double grow = font - 10.0;  // a larger font: the box grows up and the places move out
@@ -129,6 +143,24 @@ std::string point_label(LabelBoxes& taken, double x, double y, const std::string
     return text(x + p.dx, baseline, label,
                 " class=\"point-label\" font-size=\"" + format_g(font, 3) + "\" fill=\"#555\"" +
                     (p.end ? " text-anchor=\"end\"" : ""));
+  }
+  constexpr double kPi = 3.14159265358979323846;
+  for (double r = 24; r <= 160; r += 12) {
+    for (int k = 0; k < 16; ++k) {
+      const double a = kPi / 2 - k * kPi / 8;  // from straight up, clockwise
+      const double ax = x + r * std::cos(a), ay = y - r * std::sin(a);
+      const bool end = std::cos(a) < -1e-9;    // left of the point: the text ends at the anchor
+      const double x0 = end ? ax - w : ax, baseline = ay + 4;
+      const LabelBoxes::Box box{x0, baseline - 9 - grow, x0 + w, baseline + 2};
+      // The leader stops 2 px short of the label's box.
+      const double ex = end ? box.x1 + 2 : box.x0 - 2, ey = std::clamp(y, box.y0, box.y1);
+      if (!taken.place_with_leader(box, {x, y, ex, ey})) continue;
+      return "<line class=\"leader\" x1=\"" + format_g(x, 6) + "\" y1=\"" + format_g(y, 6) + "\" x2=\"" +
+             format_g(ex, 6) + "\" y2=\"" + format_g(ey, 6) + "\" stroke=\"#999\" stroke-width=\"0.6\"/>\n" +
+             text(ax, baseline, label,
+                  " class=\"point-label\" font-size=\"" + format_g(font, 3) + "\" fill=\"#555\"" +
+                      (end ? " text-anchor=\"end\"" : ""));
+    }
   }
   return {};
 }
@@ -166,7 +198,11 @@ double legend_width(const std::vector<std::string>& labels) {
   return labels.empty() ? 0.0 : std::max(110.0, 44.0 + widest);
 }
 
-std::string render_svg(const Chart& given) {
+namespace {
+
+// One layout of the chart; the point labels no place was free for are
+// added to `unplaced`.
+std::string render_svg_once(const Chart& given, std::vector<std::string>& unplaced) {
   Chart chart = given;
   {
     std::vector<double> xs, ys;
@@ -332,7 +368,7 @@ std::string render_svg(const Chart& given) {
   }
   std::ostringstream points;
   // Markers, error bars and lines first, so that point labels avoid them too.
-  LabelBoxes labels{{left, top, right, bottom}, {}, {}};
+  LabelBoxes labels{{left, top, right, bottom}, {}, {}, {}};
   for (const auto& h : chart.hlines) {
     if (usable(h.y, chart.y.scale)) labels.lines.push_back({left, my(h.y), right, my(h.y)});
   }
@@ -392,7 +428,10 @@ std::string render_svg(const Chart& given) {
         points << (s.faded ? "<g opacity=\"0.35\">" + marker + "</g>" : marker) << "\n";
         if (i < s.point_labels.size() && !s.point_labels[i].empty() && !no_value) {
           const std::string label = point_label(labels, mx(x), my(y), s.point_labels[i], narrow ? font - 2 : 10.0);
-          if (!label.empty()) points << label << "\n";
+          if (!label.empty())
+            points << label << "\n";
+          else
+            unplaced.push_back(s.point_labels[i]);
         }
         continue;
       }
@@ -437,6 +476,23 @@ std::string render_svg(const Chart& given) {
         << "\n";
   svg << "</svg>\n";
   return svg.str();
+}
+
+}  // namespace
+
+std::string render_svg(const Chart& chart) {
+  std::vector<std::string> unplaced;
+  std::string svg = render_svg_once(chart, unplaced);
+  if (unplaced.empty()) return svg;
+  // No label is lost silently: the note names those without a free place.
+  Chart noted = chart;
+  std::string names;
+  for (std::size_t i = 0; i < unplaced.size() && i < 4; ++i) names += (i ? ", " : "") + unplaced[i];
+  if (unplaced.size() > 4) names += ", …";
+  noted.note += (noted.note.empty() ? "" : " ") + std::to_string(unplaced.size()) +
+                " point label(s) had no free place and are not drawn (" + names + ").";
+  std::vector<std::string> again;
+  return render_svg_once(noted, again);
 }
 
 std::string render_svg_file(const Chart& chart) {

@@ -156,7 +156,7 @@ std::string to_html(const Table& table, const std::string& css_class) {
   // The print layout class (table_print_fit.h) rides along with the caller's.
   std::string out = "<table class=\"" + xml_escape(css_class) + " " + print_fit_class(table) + "\">\n<thead><tr>";
   for (const auto& c : table.columns) {
-    if (!c.csv_only) out += "<th>" + xml_escape(title_of(c)) + "</th>";
+    if (!c.csv_only) out += (c.screen_only ? "<th class=\"screen-only\">" : "<th>") + xml_escape(title_of(c)) + "</th>";
   }
   out += "</tr></thead>\n<tbody>\n";
   const auto exponent = exponent_columns(table);
@@ -165,7 +165,9 @@ std::string to_html(const Table& table, const std::string& css_class) {
     for (std::size_t i = 0; i < table.columns.size(); ++i) {
       const Column& c = table.columns[i];
       if (c.csv_only) continue;
-      out += c.numeric ? "<td class=\"num\">" : c.prose ? "<td class=\"prose\">" : "<td>";
+      const std::string cls = std::string(c.numeric ? "num" : c.prose ? "prose" : "") +
+                              (c.screen_only ? (c.numeric || c.prose ? " screen-only" : "screen-only") : "");
+      out += cls.empty() ? "<td>" : "<td class=\"" + cls + "\">";
       const std::string shown = xml_escape(shown_text(exponent, i, row));
       out += (i < row.size() && !row[i].href.empty() ? "<a href=\"" + xml_escape(row[i].href) + "\">" + shown + "</a>"
                                                     : shown) +

@@ -23,6 +23,8 @@ struct Column {
   bool csv_only = false;     // left out of the Markdown/HTML table
   bool numeric = false;      // right-aligned in HTML
   bool prose = false;        // free text (notes, reasons): wraps in HTML
+  bool screen_only = false;  // HTML on screen, left out in print (a detail whose values the CSV keeps),
+                             // so the printed table fits a portrait page (table_print_fit.h)
 };
 
 struct Table {

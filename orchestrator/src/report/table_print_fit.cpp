@@ -30,7 +30,7 @@ double narrowest_print_width_pt(const Table& table, double font_pt, bool numbers
   double total = 0;
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
     const Column& col = table.columns[c];
-    if (col.csv_only) continue;
+    if (col.csv_only || col.screen_only) continue;  // not printed
     double width = 1.1 * longest_word_pt(col.title.empty() ? col.name : col.title, font_pt);
     if (col.prose) width = std::max(width, kProseMinChars * 0.62 * font_pt);
     for (const auto& row : table.rows) {

@@ -46,18 +46,7 @@ std::vector<Cell> tally_row(const std::string& factor, const std::string& level,
   return row;
 }
 
-int verdict_rank(const std::string& verdict) {
-  if (verdict == "converged") return 2;
-  if (verdict == "pre-asymptotic") return 1;
-  return 0;
-}
 
-// The finest grid's RDE, +∞ without one (an unknown error ranks as large).
-double finest_rde(const SeriesSummary& s) {
-  if (!s.extrapolation || s.extrapolation->grids.empty() || !s.extrapolation->grids.front().rde)
-    return std::numeric_limits<double>::infinity();
-  return *s.extrapolation->grids.front().rde;
-}
 
 }  // namespace
 
@@ -87,19 +76,6 @@ Table verdict_count_table(const std::vector<SeriesSummary>& series) {
     for (const auto& level : levels) t.rows.push_back(tally_row(factors.front()[k].first, level, tallies[level], words));
   }
   return t;
-}
-
-std::vector<std::size_t> worst_series(const std::vector<SeriesSummary>& series, std::size_t max) {
-  std::vector<std::size_t> order(series.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  const auto key = [&series](std::size_t i) {
-    return std::make_tuple(verdict_rank(series[i].verdict), -finest_rde(series[i]), i);
-  };
-  const std::size_t n = std::min(max, order.size());
-  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(n), order.end(),
-                    [&key](std::size_t a, std::size_t b) { return key(a) < key(b); });
-  order.resize(n);
-  return order;
 }
 
 }  // namespace gridfree

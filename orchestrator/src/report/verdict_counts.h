@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What a study page shows of its verdicts when it has too many series to
 // list them all (report_layout.h): how many series got each verdict, over
-// the study and per factor level, and which series are the worst.
+// the study and per factor level (the series that need a look are ranked by
+// series_concerns.h).
 #pragma once
 
 #include <cstddef>
@@ -18,11 +19,5 @@ namespace gridfree {
 // pre-asymptotic, unreliable, insufficient_grids, then any other word in
 // order of appearance) and incomplete (series with pending grids).
 Table verdict_count_table(const std::vector<SeriesSummary>& series);
-
-// Indices of at most `max` series, worst first: by verdict (no verdict,
-// insufficient_grids and unreliable, then pre-asymptotic, then converged),
-// then by the finest grid's RDE, largest first (none counts as largest),
-// then in study order.
-std::vector<std::size_t> worst_series(const std::vector<SeriesSummary>& series, std::size_t max);
 
 }  // namespace gridfree

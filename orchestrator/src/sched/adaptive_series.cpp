@@ -13,6 +13,7 @@
 #include "sched/adaptive_window.h"
 #include "sched/series_finish.h"
 #include "study/study_plan.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 namespace {
@@ -91,7 +92,9 @@ bool decide_series(Store& store, const SeriesInfo& s, const AdaptiveGrids& setti
     try {
       WindowedFit w = windowed_extrapolation(h, f, extrapolate);  // the finest grids when the coarse spoil the fit
       ex = std::move(w.extrapolation);
-      window = window_sentence(w);
+      // The cell size in the case's own symbol (study/case_vocabulary.h).
+      window = window_sentence(
+          w, case_vocabulary(s.key.external() ? CaseKind::external : CaseKind::particle_bed).h_symbol);
     } catch (const std::exception& e) {
       ex = {{"status", std::string("error: ") + e.what()}};
     }

@@ -61,9 +61,9 @@ WindowedFit windowed_extrapolation(const std::vector<double>& h, const std::vect
   return w;
 }
 
-std::string window_sentence(const WindowedFit& w) {
+std::string window_sentence(const WindowedFit& w, const std::string& h_symbol) {
   if (w.left_out == 0) return "";
-  return "fit on the " + std::to_string(w.used) + " finest grids, Δ* " + g3(w.coarsest_used_h) + " → " +
+  return "fit on the " + std::to_string(w.used) + " finest grids, " + h_symbol + " " + g3(w.coarsest_used_h) + " → " +
          g3(w.finest_h) + "; the " + std::to_string(w.left_out) + " coarser one" + (w.left_out == 1 ? " was" : "s were") +
          " left out (the fit on all " + std::to_string(w.used + w.left_out) + " was " +
          (w.full_set_verdict.empty() ? std::string("not made") : w.full_set_verdict) + ")";

@@ -38,7 +38,7 @@ WindowedFit windowed_extrapolation(const std::vector<double>& h, const std::vect
 // "" when every grid was used, else e.g. "fit on the 5 finest grids, Δ* 1.35
 // → 0.553; the 3 coarser ones were left out (the fit on all 8 was
 // pre-asymptotic)".
-std::string window_sentence(const WindowedFit& w);
+std::string window_sentence(const WindowedFit& w, const std::string& h_symbol = "Δ*");
 
 // An Extrapolator that applies the rule and returns the window's JSON, so the
 // stored extrapolation and verdict of an adaptive series are the window's.

@@ -23,7 +23,9 @@
 #include "store/store_alignment.h"
 #include "store/store_beds.h"
 #include "store/store_ensembles.h"
+#include "report/series_vocabulary.h"
 #include "study/adaptive_grids.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 namespace {
@@ -50,14 +52,15 @@ VerdictRow verdict_row(const nlohmann::json& ex, int n_converged) {
 }
 
 // demote_if_flagged on the verdict object of the extrapolation JSON (h in any order).
-void demote_flagged_json(const CoverageCheck& check, std::vector<double> h, nlohmann::json& ex) {
+void demote_flagged_json(const CoverageCheck& check, std::vector<double> h, nlohmann::json& ex,
+                         const std::string& h_symbol) {
   if (!check.flagged() || h.empty() || !ex.contains("verdict") || !ex["verdict"].is_object() ||
       ex["verdict"].value("value", std::string()) != "converged")
     return;
   std::sort(h.begin(), h.end());
   Verdict v;
   v.value = "converged";
-  demote_if_flagged(check, h, v);
+  demote_if_flagged(check, h, v, h_symbol);
   ex["verdict"]["value"] = v.value;
   ex["verdict"]["reasons"] = v.reasons;
   ex["verdict"]["next_h"] = v.next_h ? nlohmann::json(*v.next_h) : nlohmann::json(nullptr);
@@ -107,6 +110,7 @@ std::vector<std::string> generator_kinds(const nlohmann::json& def) {
 ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_id) {
   ExtrapolatorSettings s;
   const auto def = store.study_definition(study_id);
+  s.h_symbol = case_vocabulary(case_kind_of(def)).h_symbol;
   if (!def.is_object() || !def.contains("extrapolation")) return s;
   const auto& e = def["extrapolation"];
   if (e.contains("method") && e["method"].is_string()) s.method = e["method"].get<std::string>();
@@ -157,6 +161,10 @@ void extrapolation_rows(const nlohmann::json& ex, const std::vector<SeriesPoint>
     r.data_range = num(ex, "data_range");
     r.fs = num(ex, "fs");
     r.chosen = chosen_fit == m;
+    // The chosen fit's row keeps U₀ as the extrapolation gave it (widened by
+    // the averaged method and the bias checks), so `status` prints the f0 ± U₀
+    // the report prints, not 1.25|f0 − f₁| + σ_RE recomputed.
+    if (r.chosen && num(ex, "u0")) f["u0"] = *num(ex, "u0");
     r.status = status;
     if (m == "power" && f.contains("p_found") && f["p_found"].is_boolean() && !f["p_found"].get<bool>())
       r.status += " (p not found)";
@@ -201,7 +209,9 @@ nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extra
   } catch (const std::exception& e) {
     spdlog::warn("series {}: coverage self-check failed: {}", series.key.label(), e.what());
   }
-  if (check) demote_flagged_json(*check, h, ex);
+  if (check)
+    demote_flagged_json(*check, h, ex,
+                        case_vocabulary(series.key.external() ? CaseKind::external : CaseKind::particle_bed).h_symbol);
   std::vector<ExtrapolationRow> fits;
   std::vector<UncertaintyRow> unc;
   extrapolation_rows(ex, points, fits, unc);
@@ -312,7 +322,8 @@ std::filesystem::path write_report(Store& store, long long study_id, const std::
                                    const StopRequested& stop, ExtrapolationMemo* memo) {
   const StudyReportData data = build_report_data(store, study_id);
   Extrapolator extrapolate =
-      library_extrapolator({data.extrapolation_method, data.p_low, data.p_high, "inverse_h", data.expected_order});
+      library_extrapolator({data.extrapolation_method, data.p_low, data.p_high, "inverse_h", data.expected_order,
+                            study_vocabulary(data.series).h_symbol});
   // Adaptive series: the report fits what the decisions and the store used,
   // the window of the finest grids (sched/adaptive_window.h).
   if (adaptive_grids_of(store.study_definition(study_id))) extrapolate = windowed_extrapolator(std::move(extrapolate));

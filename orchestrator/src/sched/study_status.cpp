@@ -40,11 +40,13 @@ nlohmann::json series_row(Store& store, const SeriesInfo& s) {
     ++total;
     if (p.job_status == "done" || p.job_status == "failed") ++done;
   }
-  std::optional<double> f0, sigma_re;
+  std::optional<double> f0, sigma_re, stored_u0;
   for (const auto& e : store.extrapolations(s.id))
     if (e.chosen) {
       f0 = e.f0;
       sigma_re = e.sigma_re;
+      const auto detail = nlohmann::json::parse(e.detail_json, nullptr, false);
+      if (detail.is_object() && detail.contains("u0") && detail["u0"].is_number()) stored_u0 = detail["u0"].get<double>();
     }
   std::optional<double> rde, f1, u1;
   double finest = INFINITY;
@@ -55,10 +57,11 @@ nlohmann::json series_row(Store& store, const SeriesInfo& s) {
       f1 = u.f;
       u1 = u.u;
     }
-  // U₀ as the extrapolation defines it (docs/EXTRAPOLATION.md "U₀"), from the
-  // stored f0, σ_RE and finest value.
-  std::optional<double> u0;
-  if (f0 && sigma_re && f1) u0 = extrapolated_value_uncertainty(*f0, *f1, *sigma_re);
+  // U₀ as the extrapolation gave it (stored with the chosen fit since
+  // 2026-12-07); for older rows 1.25|f0 − f₁| + σ_RE from the stored f0, σ_RE
+  // and finest value (docs/EXTRAPOLATION.md "U₀", before any widening).
+  std::optional<double> u0 = stored_u0;
+  if (!u0 && f0 && sigma_re && f1) u0 = extrapolated_value_uncertainty(*f0, *f1, *sigma_re);
   return {{"series", s.key.label()}, {"grids_done", done},  {"grids", total}, {"status", s.status},
           {"verdict", s.verdict.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.verdict)},
           {"f0", opt(f0)},           {"u0", opt(u0)},       {"f1", opt(f1)},  {"u1", opt(u1)},

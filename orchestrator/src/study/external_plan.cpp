@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
+#include <map>
 
 namespace gridfree {
 
@@ -25,9 +25,13 @@ Plan make_external_plan(const Study& study, const ExpandedStudy& expanded, int w
     plan.rows[s].series = expanded.series[s].label();
     plan.rows[s].cost_basis = "unknown";
   }
-  std::set<std::string> counted;
+  std::map<std::string, std::size_t> counted;  // job hash → the series whose row counts it
   for (const auto& job : expanded.jobs) {
-    if (!counted.insert(job.hash).second) continue;  // the case's other quantities read this job
+    const auto [at, fresh] = counted.emplace(job.hash, job.series);
+    if (!fresh) {  // the case's other quantities read this job: counted once, where it was first
+      if (plan.rows[job.series].grids == 0) plan.rows[job.series].reads_jobs_of = plan.rows[at->second].series;
+      continue;
+    }
     const StudyCase* c = study.find_case(expanded.series[job.series].case_name);
     if (c == nullptr || !c->external) continue;
     PlanRow& row = plan.rows[job.series];

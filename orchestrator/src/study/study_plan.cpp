@@ -96,6 +96,7 @@ nlohmann::json plan_to_json(const Plan& plan) {
                     {"cost_ratio", {r.cost_ratio_min, r.cost_ratio_max}},
                     {"cost_basis", r.cost_basis}});
     if (!r.memory_basis.empty()) rows.back()["memory_basis"] = r.memory_basis;
+    if (!r.reads_jobs_of.empty()) rows.back()["reads_jobs_of"] = r.reads_jobs_of;
   }
   return {{"series", rows},
           {"jobs", plan.jobs},
@@ -156,6 +157,11 @@ std::string plan_to_table(const Plan& plan) {
   out += line;
   std::vector<std::pair<std::string, std::string>> bases;  // first series with each distinct basis
   for (const auto& r : plan.rows) {
+    if (r.grids == 0 && !r.reads_jobs_of.empty()) {  // never "0 grids, 0 cells, 0.0 B, 0 s"
+      out += r.series + std::string(r.series.size() < 40 ? 40 - r.series.size() : 0, ' ') + " read from the jobs of " +
+             r.reads_jobs_of + " (same grids, no cost of its own)\n";
+      continue;
+    }
     std::snprintf(line, sizeof line, "%-40s %5zu %12llu %12s %12s  %s\n", r.series.c_str(), r.grids,
                   static_cast<unsigned long long>(r.cells), human_bytes(r.memory_bytes).c_str(),
                   human_seconds(r.seconds).c_str(), plan.external ? r.cost_basis.c_str() : cost_column(r).c_str());

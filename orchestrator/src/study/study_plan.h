@@ -58,6 +58,7 @@ struct PlanRow {
   double cost_ratio_min = 0, cost_ratio_max = 0;  // r over the series' jobs
   std::string cost_basis;        // of the series' largest grid
   std::string memory_basis;      // external studies: where memory_bytes comes from (study/external_plan.h)
+  std::string reads_jobs_of;     // external studies: another quantity of the same jobs, counted there
 };
 
 struct Plan {

@@ -10,10 +10,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <optional>
 #include <regex>
+#include <vector>
 #include <sstream>
 #include <string>
 
@@ -167,6 +171,35 @@ TEST(OrchestratorCli, RunRecordsEveryOutcomeRetriesOnceAndReusesOnRerun) {
   const auto st = nlohmann::json::parse(out.text);
   EXPECT_EQ(st[0]["converged"], 8);
   EXPECT_EQ(st[0]["failed"], 8);
+  // status's U₀ is the report's (series.csv), as the extrapolation gave it,
+  // not 1.25|f0 − f₁| + σ_RE recomputed without the averaged method's widening.
+  std::optional<double> status_u0;
+  for (const auto& row : st[0]["detail"]["series"])
+    if (row["series"].get<std::string>().rfind("ok ", 0) == 0 && row["u0"].is_number()) status_u0 = row["u0"].get<double>();
+  ASSERT_TRUE(status_u0) << st.dump();
+  // series.csv: unquoted fields up to u0 (series, f0, verdict, attention,
+  // concerns, factor columns: no commas in this study's values before it).
+  const auto fields = [](const std::string& text) {
+    std::vector<std::string> parts(1);
+    for (char ch : text) {
+      if (ch == ',')
+        parts.emplace_back();
+      else
+        parts.back().push_back(ch);
+    }
+    return parts;
+  };
+  std::ifstream csv(dir / "reports/mixed/series.csv");
+  std::string line;
+  std::getline(csv, line);
+  const auto header = fields(line);
+  const auto u0_column = std::find(header.begin(), header.end(), "u0") - header.begin();
+  ASSERT_LT(static_cast<std::size_t>(u0_column), header.size()) << line;
+  std::optional<double> report_u0;
+  while (std::getline(csv, line))
+    if (line.rfind("ok ", 0) == 0) report_u0 = std::stod(fields(line).at(static_cast<std::size_t>(u0_column)));
+  ASSERT_TRUE(report_u0);
+  EXPECT_NEAR(*status_u0, *report_u0, 1e-9 * std::fabs(*report_u0));
   EXPECT_EQ(sqlite_query(db, "PRAGMA integrity_check"), "ok");
 }
 

@@ -143,7 +143,7 @@ TEST(StabilityStudy, EveryCellHasTheDocumentedOutcomeAndNoConvergedValueIsWrong)
   const auto text = gridfree::test_support::run_merged("cd " + shell_quote(dir.string()) + " && " +
                                                        shell_quote(kGridfreeExe.string()) +
                                                        " status stability-reduced --db g.sqlite");
-  EXPECT_NE(text.text.find("grids by outcome (stability): 25 converged, 2 diverged, 4 invalid, 1 stalled"),
+  EXPECT_NE(text.text.find("grids by outcome (stability): 25 solved, 2 diverged, 4 invalid, 1 stalled"),
             std::string::npos)
       << text.text;
 
@@ -154,7 +154,7 @@ TEST(StabilityStudy, EveryCellHasTheDocumentedOutcomeAndNoConvergedValueIsWrong)
   EXPECT_NE(html.find("dense-Re300 central fwhm1 bvk, Δ* 1.412: diverged: diverged: no progress"), std::string::npos)
       << "no hover reason for the wandering run";
   // Δ* to 4 significant digits, as in every table (extrap/value_format.h).
-  EXPECT_NE(html.find("converges down to Δ* 2; first failure at Δ* 1.412: diverged"), std::string::npos);
+  EXPECT_NE(html.find("solved down to Δ* 2; first failure at Δ* 1.412: diverged"), std::string::npos);
   std::ifstream csv(report / "stability.csv");
   int csv_rows = -1;  // the header
   for (std::string line; std::getline(csv, line);) ++csv_rows;

@@ -137,6 +137,11 @@ TEST_F(OpenFoamFactors, SchemeFactorAndDiffusivityEnsembleEndToEnd) {
   EXPECT_NE(budget.find("diffusivity: scheme=Gauss linear T_mean"), std::string::npos) << budget;
   EXPECT_NE(budget.find("scheme Gauss upwind vs Gauss linear"), std::string::npos) << budget;
   EXPECT_NE(file_text(report / "report.md").find("differing only in one of the study's factors"), std::string::npos);
+  // What a person reads speaks the case's words: no particle-bed term
+  // (study/case_vocabulary.h), ensemble section and budget chart included.
+  for (const char* page : {"report.md", "report.html", "budget_diffusivity.svg"})
+    for (const char* word : {"Δ*", "particle", "drag", "filter width", "FM18", "DP*", "outer iteration", "ε_s"})
+      EXPECT_EQ(file_text(report / page).find(word), std::string::npos) << page << ": " << word;
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(DISTINCT levels) || ' ' || MIN(instances) FROM v_ensemble_budget"),
             "2 3");
   // A rerun reuses every job.

@@ -106,7 +106,7 @@ TEST_F(OpenFoamStudy, RunGivesTheDeclaredHAVerdictAndTheQuantity) {
   EXPECT_EQ(ts::sqlite_query(db, "SELECT verdict FROM series WHERE quantity = 'mean_u2'"), "pre-asymptotic");
   const auto reasons = ts::sqlite_query(db, "SELECT verdict_reasons FROM series WHERE quantity = 'mean_u2'");
   EXPECT_NE(reasons.find("the finest grid's RDE"), std::string::npos) << reasons;
-  EXPECT_NE(reasons.find("exceeds 5 %"), std::string::npos) << reasons;
+  EXPECT_NE(reasons.find("exceeds 5%"), std::string::npos) << reasons;
   const auto fit = ts::sqlite_query(db, "SELECT f0 || ' ' || p || ' ' || sigma_re FROM extrapolations WHERE chosen = 1");
   std::istringstream fs_(fit);
   double f0 = 0, p = 0, sigma = 0;

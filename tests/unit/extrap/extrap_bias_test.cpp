@@ -133,6 +133,32 @@ TEST(BiasChecks, LeaveOneOutFitsThatDisagreeAreNotConverged) {
   EXPECT_EQ(r.verdict.reasons.front(), failed.front());
 }
 
+// The leave-one-out sentence quotes f0, the refit's f0, their difference and
+// U₀ to the digits f0 ± U₀ is printed with after the check widened U₀:
+// U₀ = 1.0 + 1.25·2.43 = 4.04 → "4.0", one decimal; 1019.43 → "1019.4",
+// 1017.0 → "1017.0", the difference of the printed values 2.4.
+TEST(BiasChecks, LeaveOneOutSentenceQuotesTheDigitsOfFZeroPlusMinusU) {
+  const auto h = geometric_h(6, 0.5, 1.2);
+  std::vector<double> f;
+  for (double x : h) f.push_back(1017.0 + x);
+  ExtrapolationResult r;
+  r.method = "power";
+  r.f0 = 1017.0;
+  r.u0 = 1.0;
+  r.sigma_re = 0.0;
+  for (std::size_t i = 0; i < h.size(); ++i) r.grids.push_back({h[i], f[i], f[i], 1.0, 1.0 / 1017.0});
+  const Series s = make_series(h, f);
+  const SubSeriesF0 refit = [&](const Series& sub) -> std::optional<double> {
+    return sub.h.front() == h.front() ? 1017.8 : 1019.43;  // without the coarsest: 0.8 < U₀, agrees
+  };
+  const auto failed = apply_bias_checks(s, ExtrapolationOptions{}, refit, r);
+  ASSERT_EQ(failed.size(), 1u);
+  EXPECT_NEAR(*r.u0, 1.0 + 1.25 * 2.43, 1e-9);
+  EXPECT_NE(failed[0].find("f0 without the finest grid (1019.4) differs from f0 = 1017.0 by 2.4 > U₀ = 1.0 "),
+            std::string::npos)
+      << failed[0];
+}
+
 // f = 1 + 0.1 h + h² on 8 grids, h = 0.1 … 1.71: the h² term dominates the
 // grids, so every window and the whole series see p ≈ 2 and share one bias.
 // The window comparison covers 10 of 10 while f₁ ± U₁ misses the exact 1;

@@ -64,7 +64,7 @@ TEST(ExtrapVerdict, EnvelopeEdgesAreInsideAndBeyondIsUnreliable) {
   EXPECT_EQ(judge(fitted(kH5, zigzag, 1028.5, 1.2, 0.3, 0.01), {}).value, "converged");
   const Verdict low = judge(fitted(kH5, kF5, 1013.4, 1.2, 0.3, 0.01), {});
   EXPECT_EQ(low.value, "unreliable");
-  EXPECT_TRUE(any_reason_contains(low, "outside the data envelope [1014, 1028]")) << low.reasons.front();
+  EXPECT_TRUE(any_reason_contains(low, "outside the data envelope [1013.5, 1028.5]")) << low.reasons.front();
   EXPECT_DOUBLE_EQ(*low.checks.envelope_low, 1013.5);
   EXPECT_DOUBLE_EQ(*low.checks.envelope_high, 1028.5);
   EXPECT_EQ(judge(fitted(kH5, zigzag, 1028.6, 1.2, 0.3, 0.01), {}).value, "unreliable");
@@ -83,11 +83,52 @@ TEST(ExtrapVerdict, ConvergedReasonStatesWhereF0Lies) {
   const std::vector<double> f{1015.6, 1014.9, 1015.3, 1014.1, 1013.7};
   const Verdict above = judge(fitted(kH5, f, 1016.4, 1.2, 0.3, 0.01), {});
   ASSERT_EQ(above.value, "converged") << above.reasons.front();
-  EXPECT_TRUE(any_reason_contains(above, "f0 lies 0.8 above the largest value 1016")) << above.reasons.front();
+  EXPECT_TRUE(any_reason_contains(above, "f0 lies 0.8 above the largest value 1015.6")) << above.reasons.front();
   const std::vector<double> g{1018, 1019, 1017, 1022, 1024};
   const Verdict inside = judge(fitted(kH5, g, 1017.5, 1.2, 0.3, 0.01), {});
   ASSERT_EQ(inside.value, "converged") << inside.reasons.front();
   EXPECT_TRUE(any_reason_contains(inside, "f0 lies within the data range [1017, 1024]"));
+}
+
+// The two sentences whose arithmetic looked wrong: each value is
+// quoted to the decimal U supports (two significant digits of U), the
+// distance taken between the quoted values, so the printed numbers add up.
+TEST(ExtrapVerdict, SentencesQuoteTheDigitsOfFZeroPlusMinusU) {
+  // f0 = 1016.98 ± 1.4637 prints "1017.0 ± 1.5"; the largest value 1015.855
+  // prints "1015.9" and 1017.0 − 1015.9 = 1.1 (never "1.14 above 1016").
+  const std::vector<double> up{1015.855, 1015.2, 1014.9, 1014.1, 1013.7};
+  ExtrapolationResult r = fitted(kH5, up, 1016.98, 1.2, 0.3, 0.01);
+  r.u0 = 1.4637;
+  Verdict v = judge(r, {});
+  ASSERT_EQ(v.value, "converged") << v.reasons.front();
+  EXPECT_TRUE(any_reason_contains(v, "f0 lies 1.1 above the largest value 1015.9 (")) << v.reasons.front();
+  // f0 = 1003.004 ± 0.47 prints "1003.00 ± 0.47"; the smallest value 1003.43:
+  // "0.43 below the smallest value 1003.43" (never "0.4262 below … 1003").
+  const std::vector<double> down{1003.43, 1003.9, 1004.2, 1004.9, 1005.6};
+  r = fitted(kH5, down, 1003.004, 1.2, 0.3, 0.01);
+  r.u0 = 0.47;
+  v = judge(r, {});
+  ASSERT_EQ(v.value, "converged") << v.reasons.front();
+  EXPECT_TRUE(any_reason_contains(v, "f0 lies 0.43 below the smallest value 1003.43 (")) << v.reasons.front();
+  // Without U₀ the finest grid's U₁ gives the digits; an f0 beyond the
+  // envelope quotes f0 and the envelope's edges with them.
+  r = fitted(kH5, kF5, 1013.4123, 1.2, 0.3, 0.01);
+  r.grids.front().u = 0.0712;  // two digits: 0.071, values to 3 decimals
+  v = judge(r, {});
+  ASSERT_EQ(v.value, "unreliable");
+  EXPECT_TRUE(any_reason_contains(v, "f0 = 1013.412 lies outside the data envelope [1013.500, 1028.500]"))
+      << v.reasons.front();
+}
+
+// The next-grid advice names the cell size in the case's own symbol.
+TEST(ExtrapVerdict, NextGridAdviceUsesTheCasesSymbol) {
+  ExtrapolationResult r = fitted(kH5, kF5, 1017.0, 2.5, 0.3, 0.01);
+  EXPECT_TRUE(any_reason_contains(judge(r, {}), "add the next finer grid Δ* = "));
+  ExtrapolationOptions external;
+  external.h_symbol = "h";
+  const Verdict v = judge(r, external);
+  EXPECT_TRUE(any_reason_contains(v, "add the next finer grid h = 0.3536 (")) << v.reasons.back();
+  EXPECT_FALSE(any_reason_contains(v, "Δ*"));
 }
 
 // Data changing with one sign on every refinement (≥ 3 differences) and an
@@ -138,11 +179,11 @@ TEST(ExtrapVerdict, FinestRdeLimits) {
   EXPECT_EQ(judge(fitted(kH5, kF5, 1017.0, 1.2, 0.3, 0.05), {}).value, "converged");  // = limit
   const Verdict pre = judge(fitted(kH5, kF5, 1017.0, 1.2, 0.3, 0.0501), {});
   EXPECT_EQ(pre.value, "pre-asymptotic");
-  EXPECT_TRUE(any_reason_contains(pre, "RDE 5.01 % exceeds 5 %"));
+  EXPECT_TRUE(any_reason_contains(pre, "RDE 5.01% exceeds 5%"));
   EXPECT_EQ(judge(fitted(kH5, kF5, 1017.0, 1.2, 0.3, 0.25), {}).value, "pre-asymptotic");
   const Verdict bad = judge(fitted(kH5, kF5, 1017.0, 1.2, 0.3, 0.2501), {});
   EXPECT_EQ(bad.value, "unreliable");
-  EXPECT_TRUE(any_reason_contains(bad, "exceeds 25 %"));
+  EXPECT_TRUE(any_reason_contains(bad, "exceeds 25%"));
 }
 
 TEST(ExtrapVerdict, OrderOutsideRangeOrMissingIsPreAsymptoticWithNextGrid) {

@@ -93,7 +93,7 @@ TEST(ChartRules, LegendSizesToItsLongestEntry) {
 
 // Points 0.667 and 0.786 at nearly the same value: the second label moves
 // to the other side of its point; a third label colliding on both sides is
-// left out.
+// moved out with a leader line.
 TEST(ChartRules, PointLabelsDoNotOverlap) {
   Chart c;
   c.id = "labels";
@@ -105,7 +105,11 @@ TEST(ChartRules, PointLabelsDoNotOverlap) {
   const std::string svg = render_svg(c);
   EXPECT_NE(svg.find(">0.667</text>"), std::string::npos);
   EXPECT_NE(svg.find("text-anchor=\"end\">0.786</text>"), std::string::npos);
-  EXPECT_EQ(svg.find(">0.7</text>"), std::string::npos);
+  // The third collides on every side near its point: it is moved out with
+  // a leader line back to its point, never left out.
+  EXPECT_NE(svg.find(">0.7</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<line class=\"leader\""), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("had no free place"), std::string::npos) << svg;
 }
 
 // U_1 belongs to the finest grid: the subtitle quotes f_1 ± U_1 (U_1 to two

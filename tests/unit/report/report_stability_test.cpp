@@ -51,13 +51,13 @@ SeriesSummary stability_series_with(const std::vector<std::pair<double, std::str
 TEST(StabilityLine, ConvergesDownToTheLastGridBeforeTheFirstFailure) {
   const auto s = stability_series_with({{1.0, "invalid"}, {3.3, "converged"}, {2.0, "converged"}, {0.7, "invalid"}});
   EXPECT_EQ(stability_line(s),
-            "converges down to Δ* 2; first failure at Δ* 1: invalid (invalid at 1.000000); 2 failed grids in all");
+            "solved down to Δ* 2; first failure at Δ* 1: invalid (invalid at 1.000000); 2 failed grids in all");
   const auto all = stability_series_with({{3.3, "converged"}, {2.0, "converged"}});
-  EXPECT_EQ(stability_line(all), "converges on every finished grid, down to Δ* 2");
+  EXPECT_EQ(stability_line(all), "solved on every finished grid, down to Δ* 2");
   const auto coarse = stability_series_with({{3.3, "stalled"}, {2.0, "converged"}, {1.0, "queued"}});
   EXPECT_EQ(stability_line(coarse),
             "fails from the coarsest grid: first failure at Δ* 3.3: stalled (stalled at 3.300000); 1 finer grid(s) "
-            "converge again (1 grid(s) not finished)");
+            "solved again (1 grid(s) not finished)");
 }
 
 TEST(StabilityMethods, GciTripletsAreCountedUsableOnlyWhenMonotoneWithPInRange) {
@@ -166,7 +166,7 @@ TEST(StabilityMap, AGridTheStallRemedyActedOnIsMarkedWithTheIteration) {
   EXPECT_NE(svg.find(">✓ 325 R</text>"), std::string::npos) << svg;
   EXPECT_NE(svg.find(">✓ 81</text>"), std::string::npos) << svg;
   EXPECT_NE(svg.find(">stalled R</text>"), std::string::npos) << svg;
-  EXPECT_NE(svg.find("converged in 325 outer iterations; numerics.stall_remedy relaxed the deferred correction from "
+  EXPECT_NE(svg.find("solved in 325 outer iterations; numerics.stall_remedy relaxed the deferred correction from "
                      "outer iteration 239"),
             std::string::npos)
       << svg;

@@ -20,6 +20,9 @@
 #include "report/extrapolation_memo.h"
 #include "report/report.h"
 #include "report/report_charts.h"
+#include "report/report_content.h"
+#include "report/report_layout.h"
+#include "report/series_concerns.h"
 #include "report/verdict_counts.h"
 #include "report_test_data.h"
 #include "test_files.h"
@@ -214,13 +217,49 @@ TEST(VerdictCounts, LevelsAddUpAndTheWorstComeFirst) {
   for (const auto& [factor, n] : per_factor) EXPECT_EQ(n, 8) << factor;
   EXPECT_EQ(per_factor.size(), 3u);  // case, fwhm_dp, drag (convection and deposition have one level)
 
-  auto worse = summaries;
-  worse[5].verdict = "unreliable";
-  worse[2].verdict = "pre-asymptotic";
-  const auto w = worst_series(worse, 3);
-  ASSERT_EQ(w.size(), 3u);
-  EXPECT_EQ(w[0], 5u);
-  EXPECT_EQ(w[1], 2u);
+}
+
+// The Markdown report of a large study lists the series that need a look as
+// the Attention list ranks them, not by finest-grid RDE: a series whose
+// finest grid diverged (its RDE from the remaining grids as small as its
+// neighbours') comes before converged series whose only concern is none,
+// and a study with more concerns than kWorstSeries says how many more.
+// A diverged grid finer than the series' converged ones (its RDE unchanged).
+void add_failed_grid(SeriesData& s) {
+  GridPoint bad = s.grids.front();
+  bad.job_hash += "/finer";
+  bad.delta_star = 0.5;
+  bad.status = "diverged";
+  bad.dp_star.reset();
+  bad.reason = "residual grew";
+  s.grids.push_back(bad);
+}
+
+std::string needs_a_look_section(const StudyReportData& data) {
+  const ReportContent c = build_report_content(data, test::fake_extrapolation);
+  EXPECT_EQ(c.layout, ReportLayout::summary);
+  const std::string md = render_markdown(c);
+  const auto at = md.find("### Series that need a look, worst first");
+  EXPECT_NE(at, std::string::npos);
+  return at == std::string::npos ? std::string() : md.substr(at, md.find("\n## ", at) - at);
+}
+
+TEST(SummaryMarkdown, NeedsALookIsRankedLikeAttention) {
+  // 30 series (summary layout), all converged by the stand-in; one with a
+  // diverged grid: it is listed, with why, and no converged series is.
+  auto data = layout_study(5, {"bvk", "hkl", "wen_yu"}, {3, 6});
+  add_failed_grid(data.series[7]);
+  std::string list = needs_a_look_section(data);
+  EXPECT_NE(list.find("**[" + data.series[7].label() + "]("), std::string::npos) << list;
+  EXPECT_NE(list.find("Needs a look: 1 failed grid (diverged at Δ* 0.5)"), std::string::npos) << list;
+  EXPECT_EQ(list.find("**[" + data.series[6].label() + "]("), std::string::npos) << list;
+  EXPECT_EQ(list.find("more of"), std::string::npos);
+  // 25 series with a failed grid: the first kWorstSeries and "… and 5 more of 25".
+  data = layout_study(5, {"bvk", "hkl", "wen_yu"}, {3, 6});
+  for (std::size_t i = 0; i < 25; ++i) add_failed_grid(data.series[i]);
+  list = needs_a_look_section(data);
+  EXPECT_NE(list.find("- … and " + std::to_string(25 - kWorstSeries) + " more of 25"), std::string::npos) << list;
+  EXPECT_EQ(list.find("**[" + data.series[27].label() + "]("), std::string::npos);
 }
 
 TEST(ExtrapolationMemoTest, SameInputsAreNotExtrapolatedTwiceAndUnusedEntriesGo) {

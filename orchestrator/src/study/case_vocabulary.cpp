@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The words of each kind of case (see case_vocabulary.h).
+#include "study/case_vocabulary.h"
+
+#include "study/case_extends.h"
+
+namespace gridfree {
+
+CaseVocabulary case_vocabulary(CaseKind kind, const std::string& h_meaning, const std::string& quantity_name,
+                               const std::string& quantity_meaning) {
+  CaseVocabulary v;
+  v.kind = kind;
+  if (kind == CaseKind::particle_bed) {
+    v.h_symbol = "Δ*";
+    v.h_meaning = "Δ* (cell size / particle diameter)";
+    v.quantity_symbol = "DP*";
+    v.quantity_meaning = "DP* = Δp / (ρ_{g} U_{0}^{2})";
+    v.h_column = "delta_star";
+    v.value_column = "dp_star";
+    v.iteration = "outer iteration";
+    v.iterations_counted = true;
+    v.model_form = "drag law, filter width, particle configuration";
+    v.reference_rde = "FM18 found < 4% everywhere";
+    return v;
+  }
+  v.h_symbol = "h";
+  v.h_meaning = h_meaning.empty() ? "h" : h_meaning;
+  v.quantity_symbol = quantity_name.empty() ? "value" : quantity_name;
+  v.quantity_meaning = quantity_meaning.empty() ? v.quantity_symbol : quantity_meaning;
+  v.h_column = "h";
+  v.value_column = "value";
+  v.cells_per_direction = false;
+  v.particle_factors = false;
+  v.iteration = "iteration";
+  v.iterations_counted = false;  // the caller sets it from the results
+  return v;
+}
+
+CaseKind case_kind_of(const nlohmann::json& study_definition) {
+  if (!study_definition.is_object() || !study_definition.contains("cases") || !study_definition["cases"].is_object() ||
+      study_definition["cases"].empty())
+    return CaseKind::particle_bed;
+  const nlohmann::json c = resolved_case(study_definition, study_definition["cases"].begin().key());
+  return c.is_object() && c.contains("external") ? CaseKind::external : CaseKind::particle_bed;
+}
+
+}  // namespace gridfree
