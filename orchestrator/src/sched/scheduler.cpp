@@ -275,8 +275,9 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       if (!facts.of(job->study_id).cores.empty()) launch.cores = f.cores;
       launch.timeout_s = job_timeout_s(o, facts.of(job->study_id), *job, cost, f.cores);
       launch.cells = job->cells;
+      launch.cores_are_tasks = case_kind_of_job(job->spec).cores_are_tasks();
       if (cost) {  // an external code: gridfree's model does not describe it (exec/executor.h)
-        launch.external = true;
+        launch.own_estimate = true;
         launch.memory_bytes = cost->memory_bytes;
         launch.memory_basis = cost->memory_basis;
       } else {

@@ -79,6 +79,11 @@ class CaseKind {
                                                   const std::map<std::string, DeclaredCost>& declared,
                                                   const CostHistory& history) const = 0;
 
+  // A job's cores are tasks of an MPI run (an external template's
+  // `mpirun -np @@cores@@`: Slurm --ntasks), not threads of one process
+  // (the worker's --threads: --cpus-per-task).
+  virtual bool cores_are_tasks() const = 0;
+
   // The plan (`gridfree validate --plan`, study/study_plan.h).
   virtual Plan plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
                     const CostHistory& history) const = 0;

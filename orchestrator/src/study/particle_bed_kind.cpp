@@ -40,6 +40,7 @@ class ParticleBedKind final : public CaseKind {
   bool job_serves_several_series() const override { return false; }
   bool jobs_follow_outside_files() const override { return false; }
   bool has_bed_columns() const override { return true; }
+  bool cores_are_tasks() const override { return false; }
 
   // The worker's result document has its cells and no collect section.
   void take_result(const nlohmann::json& /*spec*/, const std::array<int, 3>& /*job_cells*/,

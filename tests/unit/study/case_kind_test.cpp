@@ -57,6 +57,7 @@ TEST(ParticleBedKind, OneJobPerSeriesGridAndTheBedColumns) {
   EXPECT_FALSE(k.job_serves_several_series());
   EXPECT_FALSE(k.jobs_follow_outside_files());
   EXPECT_TRUE(k.has_bed_columns());
+  EXPECT_FALSE(k.cores_are_tasks());  // the worker's threads
 }
 
 // The worker's result is stored as it came; its cost is gridfree's model.
@@ -119,6 +120,7 @@ TEST(ExternalKind, OneJobServesTheQuantitiesAndFollowsItsTemplate) {
   EXPECT_TRUE(k.job_serves_several_series());
   EXPECT_TRUE(k.jobs_follow_outside_files());
   EXPECT_FALSE(k.has_bed_columns());
+  EXPECT_TRUE(k.cores_are_tasks());  // mpirun -np @@cores@@
 }
 
 // The result gets the collect section it was read with and the job's cells
