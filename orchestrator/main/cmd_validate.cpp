@@ -10,6 +10,7 @@
 #include "cmd_study.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
+#include "study/case_kind.h"
 #include "study/grid_listing.h"
 #include "extrap/grid_design.h"
 #include "study/study_plan.h"
@@ -61,7 +62,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     const ExpandedStudy ex = expand(study);
     warn_close_grids(neighbour_warnings(grid_listing(study)));
     warn_close_grids(grid_warnings(study, ex));
-    std::cout << "ok: " << ex.series.size() << " series, " << (study.external() ? distinct_job_count(ex) : ex.jobs.size())
+    std::cout << "ok: " << ex.series.size() << " series, " << (case_kind(study).job_serves_several_series() ? distinct_job_count(ex) : ex.jobs.size())
               << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });

@@ -14,4 +14,11 @@ const CaseKind& case_kind_of_job(const nlohmann::json& spec) {
   return external ? external_kind() : particle_bed_kind();
 }
 
+const CaseKind& case_kind_of_definition(const nlohmann::json& definition) {
+  if (definition.is_object() && definition.contains("cases") && definition["cases"].is_object())
+    for (const auto& [name, c] : definition["cases"].items())
+      if (c.is_object() && c.contains("external")) return external_kind();
+  return particle_bed_kind();
+}
+
 }  // namespace gridfree

@@ -84,6 +84,11 @@ class CaseKind {
   // (the worker's --threads: --cpus-per-task).
   virtual bool cores_are_tasks() const = 0;
 
+  // gridfree reads the job's values from its run folder (an external case's
+  // collect section), so a finished job is read again, not rerun, when the
+  // study's way of reading changes (sched/recollect.h).
+  virtual bool results_recollectable() const = 0;
+
   // The plan (`gridfree validate --plan`, study/study_plan.h).
   virtual Plan plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
                     const CostHistory& history) const = 0;
@@ -103,5 +108,7 @@ const CaseKind& external_kind();
 const CaseKind& case_kind(const SeriesKey& key);
 const CaseKind& case_kind(const Study& study);
 const CaseKind& case_kind_of_job(const nlohmann::json& spec);
+// The kind of a stored study definition (its "cases"; none: a particle bed).
+const CaseKind& case_kind_of_definition(const nlohmann::json& definition);
 
 }  // namespace gridfree

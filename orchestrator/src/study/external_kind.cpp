@@ -59,6 +59,7 @@ class ExternalKind final : public CaseKind {
   bool jobs_follow_outside_files() const override { return true; }
   bool has_bed_columns() const override { return false; }
   bool cores_are_tasks() const override { return true; }
+  bool results_recollectable() const override { return true; }
 
   // The collect section the quantities were read with (study/external_intake.h)
   // and the job's cells (the code does not report them), so the measured

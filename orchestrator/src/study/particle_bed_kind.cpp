@@ -41,6 +41,7 @@ class ParticleBedKind final : public CaseKind {
   bool jobs_follow_outside_files() const override { return false; }
   bool has_bed_columns() const override { return true; }
   bool cores_are_tasks() const override { return false; }
+  bool results_recollectable() const override { return false; }  // the worker writes its result
 
   // The worker's result document has its cells and no collect section.
   void take_result(const nlohmann::json& /*spec*/, const std::array<int, 3>& /*job_cells*/,

@@ -40,6 +40,9 @@ TEST(CaseKind, IsChosenFromTheSeriesTheStudyOrTheJob) {
   EXPECT_EQ(case_kind_of_job(external_job()).name(), "external");
   EXPECT_EQ(case_kind_of_job(json()).name(), "particle_bed");
   EXPECT_EQ(case_kind(Study{}).name(), "particle_bed");  // no cases yet: gridfree's own
+  EXPECT_EQ(case_kind_of_definition(json::parse(R"({"cases": {"PC1": {"bed": "x"}}})")).name(), "particle_bed");
+  EXPECT_EQ(case_kind_of_definition(json::parse(R"({"cases": {"c": {"external": {}}}})")).name(), "external");
+  EXPECT_EQ(case_kind_of_definition(json()).name(), "particle_bed");
 }
 
 TEST(ParticleBedKind, LabelsAJobByItsSeriesAndCells) {
@@ -58,6 +61,7 @@ TEST(ParticleBedKind, OneJobPerSeriesGridAndTheBedColumns) {
   EXPECT_FALSE(k.jobs_follow_outside_files());
   EXPECT_TRUE(k.has_bed_columns());
   EXPECT_FALSE(k.cores_are_tasks());  // the worker's threads
+  EXPECT_FALSE(k.results_recollectable());
 }
 
 // The worker's result is stored as it came; its cost is gridfree's model.
@@ -121,6 +125,7 @@ TEST(ExternalKind, OneJobServesTheQuantitiesAndFollowsItsTemplate) {
   EXPECT_TRUE(k.jobs_follow_outside_files());
   EXPECT_FALSE(k.has_bed_columns());
   EXPECT_TRUE(k.cores_are_tasks());  // mpirun -np @@cores@@
+  EXPECT_TRUE(k.results_recollectable());  // read by its collect section
 }
 
 // The result gets the collect section it was read with and the job's cells
