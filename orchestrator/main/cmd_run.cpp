@@ -24,6 +24,7 @@
 #include "sched/recollect.h"
 #include "sched/series_finish.h"
 #include "sched/stop_signal.h"
+#include "study/case_kind.h"
 
 namespace gridfree::cli {
 namespace {
@@ -90,13 +91,6 @@ void recollect_finished_jobs(Store& store, long long study_id, const std::filesy
                  rc.failed, rc.first_error);
 }
 
-bool external_definition(const nlohmann::json& d) {
-  if (!d.is_object() || !d.contains("cases") || !d["cases"].is_object()) return false;
-  for (const auto& [name, c] : d["cases"].items())
-    if (c.is_object() && c.contains("external")) return true;
-  return false;
-}
-
 int run_study(const RunOptions& ro) {
   // 1. Validate before touching the database.
   const Study study = parse_study(ro.study_file);
@@ -113,7 +107,7 @@ int run_study(const RunOptions& ro) {
   // 2. Submit (or resume).
   Store store(ro.db, true);
   const SubmitResult sub = submit_study(store, study, ex, ro.replace);
-  if (study.external()) recollect_finished_jobs(store, sub.study_id, options.runs_root);
+  if (case_kind(study).results_recollectable()) recollect_finished_jobs(store, sub.study_id, options.runs_root);
   const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
   recover_stale_jobs(store);
   // 3. Work the study until it is done.
@@ -191,7 +185,7 @@ void add_submit_command(CLI::App& app, int& exit_code) {
     const ExpandedStudy ex = expand(study);
     Store store(*db, true);
     const SubmitResult r = submit_study(store, study, ex, *replace);
-    if (study.external()) recollect_finished_jobs(store, r.study_id, runs_root_for(*db));
+    if (case_kind(study).results_recollectable()) recollect_finished_jobs(store, r.study_id, runs_root_for(*db));
     if (r.uncancelled)
       std::cout << "requeued cancelled study " << study.name << ": " << r.jobs_requeued
                 << " cancelled job(s) queued again (" << r.jobs_total << " jobs in all)\n";
@@ -230,7 +224,8 @@ void add_daemon_command(CLI::App& app, int& exit_code) {
     // External studies whose collect section changed after their jobs
     // finished (a submit that could not re-collect): read again now.
     for (long long id : store.active_studies())
-      if (external_definition(store.study_definition(id))) recollect_finished_jobs(store, id, options.runs_root);
+      if (case_kind_of_definition(store.study_definition(id)).results_recollectable())
+        recollect_finished_jobs(store, id, options.runs_root);
     const auto adopted = adopt_stale_jobs(store, *executor, options.owner, options.timeout_s);
     recover_stale_jobs(store);
     StopSignals signals;

@@ -11,6 +11,7 @@
 #include "cmd_study.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
+#include "study/case_kind.h"
 #include "study/case_vocabulary.h"
 #include "study/grid_listing.h"
 #include "extrap/grid_design.h"
@@ -47,7 +48,7 @@ std::vector<std::string> grid_warnings(const Study& study, const ExpandedStudy& 
     }
   }
   for (const auto& [series, grids] : h)
-    for (const auto& w : grid_design_warnings(grids, case_kind_of(study.definition) == CaseKind::particle_bed))
+    for (const auto& w : grid_design_warnings(grids, case_kind_id_of(study.definition) == CaseKindId::particle_bed))
       if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
   return out;
 }
@@ -78,7 +79,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
     const ExpandedStudy ex = expand(study);
     warn_close_grids(neighbour_warnings(grid_listing(study)));
     warn_close_grids(grid_warnings(study, ex));
-    std::cout << "ok: " << ex.series.size() << " series, " << (study.external() ? distinct_job_count(ex) : ex.jobs.size())
+    std::cout << "ok: " << ex.series.size() << " series, " << (case_kind(study).job_serves_several_series() ? distinct_job_count(ex) : ex.jobs.size())
               << " jobs\n";
     exit_code = to_int(ExitCode::kOk);
   });

@@ -30,10 +30,13 @@ struct JobLaunch {
   bool hold = false;
   std::string name;                // for people: study, series, grid (Slurm job name)
   std::array<int, 3> cells{};      // grid size (cost-model estimates)
-  // An external code's job (docs/EXTERNAL.md "Cost"): gridfree's cost model
-  // does not describe it, so executors use the scheduler's estimate instead:
+  // The job's kind has its own cost estimate (study/case_kind.h own_cost;
+  // an external code, docs/EXTERNAL.md "Cost"): gridfree's cost model does
+  // not describe it, so executors use the scheduler's estimate instead:
   // memory_bytes (NaN: unknown) and where it comes from.
-  bool external = false;
+  bool own_estimate = false;
+  // Its cores are MPI tasks, not threads of one process (study/case_kind.h).
+  bool cores_are_tasks = false;
   double memory_bytes = NAN;
   std::string memory_basis;
   // The worker's --bed-cache folder (bed_cache_dir); empty = none.

@@ -92,7 +92,7 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
   } else if (job.timeout_s > 0) {  // Slurm's limit one minute past ours, so ours is the one that fires
     a.time_minutes = static_cast<long>(std::ceil(job.timeout_s / 60.0)) + 1;
     a.time_from = "from the job timeout + 1 min";
-  } else if (job.external) {  // gridfree's model says nothing about another code's run time
+  } else if (job.own_estimate) {  // gridfree's model says nothing about another code's run time
     a.time_from =
         "not given, the cluster's default (external code without timeout_s, cost.cpu_s_per_cell or a finished job "
         "of the case: give --time or --timeout)";
@@ -115,7 +115,7 @@ SlurmArray SlurmExecutor::shape_of(const JobLaunch& job) const {
   } else if (env.memory) {
     a.mem_from = "from " + env.memory->name;
     a.mem_shown = env.memory->value;
-  } else if (job.external) {  // the scheduler's estimate (docs/EXTERNAL.md "Cost"), never gridfree's model
+  } else if (job.own_estimate) {  // the scheduler's estimate (docs/EXTERNAL.md "Cost"), never gridfree's model
     if (std::isfinite(job.memory_bytes)) {
       a.mem_mb = ladder(settings_.margin * job.memory_bytes / (1024.0 * 1024.0));
       char safety[64];

@@ -35,7 +35,7 @@ std::string slurm_job_name(const std::string& text) {
 void apply_job_cores(SlurmArray& a, const JobLaunch& job) {
   if (job.cores <= 0) return;
   a.threads = job.cores;
-  if (job.external) {
+  if (job.cores_are_tasks) {
     a.tasks = job.cores;
     a.cpus = 1;
   } else {

@@ -41,9 +41,9 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
   const CaseVocabulary words = series_vocabulary(s.series);
   chart.subtitle = "each consecutive triplet at its finest " + words.h_symbol +
                    ": φ_{1} ± GCI_{fine} (marker = convergence type) and φ_{ext}";
-  chart.x = delta_star_axis((words.kind == CaseKind::external ? words.h_meaning : words.h_symbol) +
+  chart.x = delta_star_axis((words.kind == CaseKindId::external ? words.h_meaning : words.h_symbol) +
                             " (finest grid of the triplet)");
-  chart.y = {words.kind == CaseKind::external ? words.quantity_meaning : words.quantity_symbol, AxisScale::linear,
+  chart.y = {words.kind == CaseKindId::external ? words.quantity_meaning : words.quantity_symbol, AxisScale::linear,
              std::nullopt, std::nullopt};
   if (!s.extrapolation || s.extrapolation->gci.empty()) return chart;
   const ExtrapolationView& e = *s.extrapolation;

@@ -139,7 +139,7 @@ std::vector<std::string> budget_sentences(const std::vector<EnsembleConfig>& con
       if (!first) text += "; ";
       first = false;
       const std::string h =
-          case_vocabulary(configs[c].external() ? CaseKind::external : CaseKind::particle_bed).h_symbol + " ";
+          case_vocabulary(configs[c].external() ? CaseKindId::external : CaseKindId::particle_bed).h_symbol + " ";
       const std::string range = i == j ? "at " + h + format_cell_size(mine[i]->delta_star)
                                        : "for " + h + format_cell_size(mine[i]->delta_star) + "–" +
                                              format_cell_size(mine[j]->delta_star);

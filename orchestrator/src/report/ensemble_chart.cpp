@@ -25,7 +25,7 @@ Chart ensemble_budget_chart(const std::string& ensemble, const std::vector<Ensem
   const bool external = std::any_of(configs.begin(), configs.end(), [&](const EnsembleConfig& c) {
     return c.ensemble == ensemble && c.external();
   });
-  chart.x = {case_vocabulary(external ? CaseKind::external : CaseKind::particle_bed).h_meaning, AxisScale::linear, 0.0,
+  chart.x = {case_vocabulary(external ? CaseKindId::external : CaseKindId::particle_bed).h_meaning, AxisScale::linear, 0.0,
              std::nullopt};
   chart.y = {"relative size (%)", AxisScale::linear, 0.0, std::nullopt};
   int k = 0;

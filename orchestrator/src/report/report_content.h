@@ -32,7 +32,7 @@ struct NamedTable {
   std::size_t rows() const { return total_rows > table.rows.size() ? total_rows : table.rows.size(); }
   // The study's words (study/case_vocabulary.h): the reading note names the
   // case's quantity and h, its model-form factors and iterations in them.
-  CaseVocabulary words = case_vocabulary(CaseKind::particle_bed);
+  CaseVocabulary words = case_vocabulary(CaseKindId::particle_bed);
 };
 
 struct ReportContent {

@@ -15,7 +15,7 @@ namespace {
 // difference in one of its own factors (report/ensemble_budget.h).
 std::string rule_text(const EnsembleSection& e) {
   const bool external = !e.configs.empty() && e.configs.front().external();
-  const std::string h = case_vocabulary(external ? CaseKind::external : CaseKind::particle_bed).h_symbol;
+  const std::string h = case_vocabulary(external ? CaseKindId::external : CaseKindId::particle_bed).h_symbol;
   return "f0 is averaged over every instance that has one, whatever its verdict (a configuration where not every "
          "instance converged is flagged); U and RDE at a " + h + " over the instances with a value there. Spread: "
          "sample standard deviation s, standard error s/√n, min–max. Budget at each " + h + ": discretization = "
@@ -78,8 +78,8 @@ Table ensemble_budget_table(const std::vector<EnsembleConfig>& configs, const st
   Table t;
   t.columns = {{"configuration", "Configuration"},
                {"delta_star",
-                case_vocabulary(!configs.empty() && configs.front().external() ? CaseKind::external
-                                                                               : CaseKind::particle_bed)
+                case_vocabulary(!configs.empty() && configs.front().external() ? CaseKindId::external
+                                                                               : CaseKindId::particle_bed)
                     .h_symbol,
                 false, true},
                {"instances_with_u", "Instances", false, true},

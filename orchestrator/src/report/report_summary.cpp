@@ -79,7 +79,7 @@ std::vector<VerdictItem> verdict_items(const ReportContent& c) {
 }
 
 std::string reading_note(const std::string& section, const CaseVocabulary& words) {
-  const bool external = words.kind == CaseKind::external;
+  const bool external = words.kind == CaseKindId::external;
   if (section == "alignment.csv") return alignment_reading_note();
   if (section == "series.csv") {
     return std::string("f0 is the extrapolated (grid-free) ") + (external ? "value of the series' quantity" : "DP*") +

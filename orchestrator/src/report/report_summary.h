@@ -33,6 +33,6 @@ std::vector<VerdictItem> verdict_items(const ReportContent& content);  // every 
 // `words`: the study's case words (an external study's declared quantity
 // and h, not DP* and Δ*; no particle-bed model form; iterations if counted).
 std::string reading_note(const std::string& section,
-                         const CaseVocabulary& words = case_vocabulary(CaseKind::particle_bed));
+                         const CaseVocabulary& words = case_vocabulary(CaseKindId::particle_bed));
 
 }  // namespace gridfree

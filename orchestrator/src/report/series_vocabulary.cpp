@@ -16,24 +16,24 @@ bool any_iterations(const SeriesData& s) {
 }  // namespace
 
 CaseVocabulary series_vocabulary(const SeriesData& s) {
-  if (s.quantity.empty()) return case_vocabulary(CaseKind::particle_bed);
-  CaseVocabulary v = case_vocabulary(CaseKind::external, s.h_label, s.quantity, s.quantity_label);
+  if (s.quantity.empty()) return case_vocabulary(CaseKindId::particle_bed);
+  CaseVocabulary v = case_vocabulary(CaseKindId::external, s.h_label, s.quantity, s.quantity_label);
   v.iterations_counted = any_iterations(s);
   return v;
 }
 
 CaseVocabulary study_vocabulary(const std::vector<SeriesData>& series) {
-  if (series.empty()) return case_vocabulary(CaseKind::particle_bed);
+  if (series.empty()) return case_vocabulary(CaseKindId::particle_bed);
   CaseVocabulary v = series_vocabulary(series.front());
-  if (v.kind == CaseKind::particle_bed) return v;
+  if (v.kind == CaseKindId::particle_bed) return v;
   for (const auto& s : series) v.iterations_counted = v.iterations_counted || any_iterations(s);
   return v;
 }
 
 CaseVocabulary study_vocabulary(const std::vector<SeriesSummary>& series) {
-  if (series.empty()) return case_vocabulary(CaseKind::particle_bed);
+  if (series.empty()) return case_vocabulary(CaseKindId::particle_bed);
   CaseVocabulary v = series_vocabulary(series.front().series);
-  if (v.kind == CaseKind::particle_bed) return v;
+  if (v.kind == CaseKindId::particle_bed) return v;
   for (const auto& s : series) v.iterations_counted = v.iterations_counted || any_iterations(s.series);
   return v;
 }

@@ -68,7 +68,7 @@ struct StabilityMap {
   int omitted = 0;                    // rows left out by the cap (all of them converged on every grid, if
                                       // the cap is not smaller than the number of series with a failure)
   int series_total = 0, series_with_failures = 0;
-  CaseVocabulary words = case_vocabulary(CaseKind::particle_bed);  // the study's: h or Δ*, iterations counted?
+  CaseVocabulary words = case_vocabulary(CaseKindId::particle_bed);  // the study's: h or Δ*, iterations counted?
 };
 
 inline constexpr std::size_t kStabilityMapMaxRows = 60;

@@ -9,9 +9,9 @@
 
 #include "job/job_hash.h"
 #include "report/extrapolator.h"
-#include "sched/adaptive_external.h"
 #include "sched/adaptive_window.h"
 #include "sched/series_finish.h"
+#include "study/case_kind.h"
 #include "study/study_plan.h"
 #include "study/case_vocabulary.h"
 
@@ -94,27 +94,22 @@ bool decide_series(Store& store, const SeriesInfo& s, const AdaptiveGrids& setti
       ex = std::move(w.extrapolation);
       // The cell size in the case's own symbol (study/case_vocabulary.h).
       window = window_sentence(
-          w, case_vocabulary(s.key.external() ? CaseKind::external : CaseKind::particle_bed).h_symbol);
+          w, case_vocabulary(s.key.external() ? CaseKindId::external : CaseKindId::particle_bed).h_symbol);
     } catch (const std::exception& e) {
       ex = {{"status", std::string("error: ") + e.what()}};
     }
   }
   AdaptiveFit fit = adaptive_fit_of(ex, static_cast<int>(h.size()));
   fit.window = window;
-  nlohmann::json spec = job_spec(store, points.front().job_id);
-  std::vector<AdaptiveRung> ladder;
-  ExternalRungs external;  // an external case's ladder in h (sched/adaptive_external.h)
-  double scale = measured > 0 && model > 0 ? measured / model : 1.0;
-  if (s.key.external()) {
-    external = external_rungs(store.study_definition(s.study_id), settings, s.key.case_name, spec, points);
-    ladder = external.rungs;
-    scale = 1;  // their costs are the external estimate itself
-  } else {
-    std::array<double, 3> domain{};
-    const auto d = spec.value("/case/domain_dp"_json_pointer, nlohmann::json::array());
-    for (std::size_t a = 0; a < 3 && a < d.size(); ++a) domain[a] = d[a].get<double>();
-    ladder = adaptive_rungs(adaptive_ladder(settings), domain);
-  }
+  const nlohmann::json spec = job_spec(store, points.front().job_id);
+  CostHistory own;  // the series' finished jobs: what an undeclared external cost is fitted to
+  for (const auto& p : points)
+    if (p.cpu_s > 0)
+      own[cost_similarity_key(spec)].push_back({static_cast<double>(p.cells[0]) * p.cells[1] * p.cells[2], p.cpu_s});
+  const KindLadder kl =
+      case_kind(s.key).adaptive_ladder(store.study_definition(s.study_id), settings, s.key, spec, own);
+  const std::vector<AdaptiveRung>& ladder = kl.rungs;
+  const double scale = kl.scale_by_measured && measured > 0 && model > 0 ? measured / model : 1.0;
   const auto decision = decide_adaptive_step(settings, ladder, points.size(), fit, scale,
                                              static_cast<double>(physical_memory_bytes()));
 
@@ -124,19 +119,8 @@ bool decide_series(Store& store, const SeriesInfo& s, const AdaptiveGrids& setti
     return false;  // another process decided first
   std::optional<long long> job_id;
   if (decision.kind == AdaptiveDecision::Kind::kContinue) {
-    const auto& rung = ladder[decision.next_rung];
-    if (s.key.external()) {
-      job_id = link_rung(store, s, external.specs[decision.next_rung], rung, decision.next_rung,
-                         external.h[decision.next_rung]);
-    } else {
-      const auto d = spec.value("/case/domain_dp"_json_pointer, nlohmann::json::array());
-      std::array<double, 3> domain{};
-      for (std::size_t a = 0; a < 3 && a < d.size(); ++a) domain[a] = d[a].get<double>();
-      const double volume = domain[0] * domain[1] * domain[2];
-      spec["numerics"]["grid"] = {{"cells", {rung.cells[0], rung.cells[1], rung.cells[2]}}};
-      job_id = link_rung(store, s, spec, rung, decision.next_rung,
-                         std::cbrt(volume / (static_cast<double>(rung.cells[0]) * rung.cells[1] * rung.cells[2])));
-    }
+    const std::size_t k = decision.next_rung;
+    job_id = link_rung(store, s, kl.specs[k], ladder[k], k, kl.h[k]);
   }
   store.db()
       .prepare("UPDATE series SET adaptive_status = ?, adaptive_note = ? WHERE id = ?")

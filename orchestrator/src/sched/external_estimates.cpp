@@ -5,12 +5,13 @@
 #include "job/memory_estimate.h"
 #include "sched/cost_history.h"
 #include "sched/external_result.h"
+#include "study/case_kind.h"
 
 namespace gridfree {
 
 std::optional<ExternalJobCost> ExternalEstimates::of(const ClaimedJob& job) {
-  if (!is_external_job(job.spec)) return std::nullopt;
-  return external_claimed_cost(job, facts_.of(job.study_id).external_costs, history());
+  const CaseKind& kind = case_kind_of_job(job.spec);
+  return kind.own_cost(job.spec, job.cells, facts_.of(job.study_id).external_costs, history());
 }
 
 double ExternalEstimates::need(const ClaimedJob& job) {

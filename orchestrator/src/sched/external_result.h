@@ -21,23 +21,6 @@ bool is_external_job(const nlohmann::json& spec);
 // "collected_with", so a later change of the study's collect section is
 // seen (re-collection, sched/recollect.h). Other jobs: unchanged.
 void note_collect_spec(const nlohmann::json& spec, ResultRow& row);
-// note_collect_spec, and the job's cells as the result's (the worker does
-// not know them), so the measured cost history has its cell counts.
-void note_external_result(const ClaimedJob& job, ResultRow& row);
-
-// An external case's declared cost figures (external.cost).
-struct DeclaredCost {
-  std::optional<double> cpu_s_per_cell, mb_per_cell;
-};
-// Case name → its declared cost (only external cases; none declared: empty fields).
-std::map<std::string, DeclaredCost> declared_external_costs(const nlohmann::json& definition);
-
-// An external job's CPU and memory estimate (study/external_plan.h): its
-// case's declared figures, else the measured history of the case
-// (`history`: sched/cost_history.h, grouped by cost_similarity_key), else
-// unknown (NaN).
-ExternalJobCost external_claimed_cost(const ClaimedJob& job, const std::map<std::string, DeclaredCost>& declared,
-                                      const CostHistory& history);
 
 // An external job's default timeout: kJobTimeoutMargin × its estimated CPU
 // seconds (declared per cell × cells, else from the case's history), at

@@ -18,6 +18,7 @@
 #include "sched/external_estimates.h"
 #include "sched/external_result.h"
 #include "sched/job_timeout.h"
+#include "study/case_kind.h"
 #include "study/cost_model.h"
 #include "study/format_number.h"
 #include "study/job_cores.h"
@@ -61,40 +62,15 @@ std::string job_label(Store& store, const ClaimedJob& job) {
     label = k.label();
     if (st.as_int(5) != 0) label += " alignment";  // a variant of the alignment check
   }
-  if (is_external_job(job.spec)) {  // one job serves every quantity: the case, its levels and its grid
-    char h[64];
-    std::snprintf(h, sizeof h, " h=%g", job.spec.value("/numerics/grid/h"_json_pointer, 0.0));
-    std::string levels;
-    const auto at = nlohmann::json::json_pointer("/case/external/levels");
-    if (job.spec.contains(at) && job.spec.at(at).is_object())
-      for (const auto& [name, level] : job.spec.at(at).items())
-        if (level.is_string()) levels += " " + name + "=" + level.get<std::string>();
-    return job.spec["case"].value("name", label) + levels + h;
-  }
-  char cells[64];
-  std::snprintf(cells, sizeof cells, " %dx%dx%d", job.cells[0], job.cells[1], job.cells[2]);
-  return label + cells;
+  return case_kind_of_job(job.spec).job_label(label, job.spec, job.cells);
 }
 
-// "<study>/<series label> d*=<Δ*>": what a queue listing shows for the job;
-// an external job's "<study>/<case> <quantities> h=<h>" (docs/EXTERNAL.md).
+// What a queue listing shows for the job (study/case_kind.h).
 std::string job_name(Store& store, const ClaimedJob& job, const std::string& label) {
   auto st = store.db().prepare("SELECT s.name, COALESCE(j.delta_star, 0) FROM studies s, jobs j WHERE s.id = ? AND j.id = ?");
   st.bind_all(job.study_id, job.job_id);
   if (!st.step()) return label;
-  if (is_external_job(job.spec)) {
-    std::string quantities;
-    const auto q = nlohmann::json::json_pointer("/case/external/collect/quantities");
-    if (job.spec.contains(q) && job.spec.at(q).is_object())
-      for (const auto& [name, spec] : job.spec.at(q).items()) quantities += (quantities.empty() ? " " : ",") + name;
-    const std::string case_name = job.spec["case"].value("name", "");
-    char h[48];
-    std::snprintf(h, sizeof h, " h=%g", job.spec.value("/numerics/grid/h"_json_pointer, 0.0));
-    return st.as_text(0) + "/" + case_name + quantities + h;
-  }
-  char d[32];
-  std::snprintf(d, sizeof d, "%g", st.as_double(1));
-  return st.as_text(0) + "/" + label.substr(0, label.rfind(' ')) + " d*=" + d;
+  return case_kind_of_job(job.spec).job_name(st.as_text(0), label, st.as_double(1), job.spec);
 }
 
 std::vector<long long> studies_of_job(Store& store, long long job_id) {
@@ -299,8 +275,9 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
       if (!facts.of(job->study_id).cores.empty()) launch.cores = f.cores;
       launch.timeout_s = job_timeout_s(o, facts.of(job->study_id), *job, cost, f.cores);
       launch.cells = job->cells;
+      launch.cores_are_tasks = case_kind_of_job(job->spec).cores_are_tasks();
       if (cost) {  // an external code: gridfree's model does not describe it (exec/executor.h)
-        launch.external = true;
+        launch.own_estimate = true;
         launch.memory_bytes = cost->memory_bytes;
         launch.memory_basis = cost->memory_basis;
       } else {
@@ -355,7 +332,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
     std::string what = f.label + ": ";
     bool failed = true;  // logged at warn unless converged or released
     if (out.kind == OutcomeKind::kFinal) {
-      note_external_result(f.job, out.row);  // external jobs: cells, what the quantities were read with
+      case_kind_of_job(f.job.spec).take_result(f.job.spec, f.job.cells, out.row.result_json, out.row.cells);
       estimates.finished(f.job, out.row);
       if (store.record_result(f.job.job_id, o.owner, out.row)) remove_checkpoint(exit->run_dir);
       ++sum.finished;

@@ -18,7 +18,7 @@ struct StudyFacts {
   bool adaptive = false;            // adaptive grids (study/adaptive_grids.h)
   bool external = false;            // its cases are external (docs/EXTERNAL.md)
   std::string cores;                // the definition's cores expression (study/job_cores.h); "" = none
-  std::map<std::string, DeclaredCost> external_costs;  // external cases' declared cost (sched/external_result.h)
+  std::map<std::string, DeclaredCost> external_costs;  // external cases' declared cost (study/external_cost.h)
 };
 
 class StudyFactsCache {

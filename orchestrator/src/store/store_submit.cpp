@@ -6,6 +6,7 @@
 #include "store/database_file.h"
 #include "store/schema.h"
 #include "store/store_ensembles.h"
+#include "study/case_kind.h"
 #include "store/store.h"
 #include "store/store_alignment.h"
 #include "store/unneeded_jobs.h"
@@ -60,8 +61,9 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
   const std::string definition = study.definition.dump();
   SubmitResult out;
   std::vector<long long> old_jobs;  // the replaced study's
-  // An external job serves each of its case's series (one per quantity).
-  out.jobs_total = study.external() ? expanded_job_hashes(expanded).size() : expanded.jobs.size();
+  const CaseKind& kind = case_kind(study);
+  // A job that serves several series (an external case's quantities) is counted once.
+  out.jobs_total = kind.job_serves_several_series() ? expanded_job_hashes(expanded).size() : expanded.jobs.size();
   Transaction tx(db_);
   {
     auto st = db_.prepare("SELECT id, definition_json, status FROM studies WHERE name = ?");
@@ -73,10 +75,10 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     };
     const bool exists = st.step();
     const bool changed = exists && same(nlohmann::json::parse(st.as_text(1))) != same(study.definition);
-    // An external study's file can stay as it was while its jobs change
-    // (a template file edited, another version of the code): its jobs are
+    // A study's file can stay as it was while its jobs change (an external
+    // template file edited, another version of the code): its jobs are
     // then replaced as by --replace, without asking.
-    const bool jobs_changed = exists && !changed && study.external() &&
+    const bool jobs_changed = exists && !changed && kind.jobs_follow_outside_files() &&
                               stored_job_hashes(st.as_int(0)) != expanded_job_hashes(expanded);
     if (jobs_changed) replace = true;
     if ((changed || jobs_changed) && !replace)
@@ -127,8 +129,8 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
   for (std::size_t i = 0; i < expanded.series.size(); ++i) {
     const auto& k = expanded.series[i];
     ins_series.reset();
-    // An external series has no particle-bed factors: NULL, not "" or 0 (docs/DATABASE.md).
-    const bool bed = !k.external();
+    // A series without particle-bed factors: NULL, not "" or 0 (docs/DATABASE.md).
+    const bool bed = case_kind(k).has_bed_columns();
     const auto bed_only = [&](const auto& v) { return bed ? std::optional(v) : std::nullopt; };
     ins_series.bind_all(out.study_id, static_cast<long long>(i), k.case_name, bed_only(k.convection),
                         bed_only(k.fwhm_dp), bed_only(k.drag), bed_only(k.deposition), k.quantity,
@@ -150,10 +152,10 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     ins_job.bind_all(job.hash, job.doc.dump(), job.cells[0], job.cells[1], job.cells[2], cells, job.delta_star)
         .run();
     const bool inserted = db_.changes() > 0;
-    // An external job's document may differ from the stored one in what is
-    // not its identity (where the template is, how quantities are read):
+    // A job's document may differ from the stored one in what is not its
+    // identity (where an external template is, how quantities are read):
     // the study's now is the one to run and collect with (re-collection).
-    if (!inserted && study.external())
+    if (!inserted && kind.jobs_follow_outside_files())
       db_.prepare("UPDATE jobs SET spec_json = ? WHERE job_hash = ?").bind_all(job.doc.dump(), job.hash).run();
     find_job.reset();
     find_job.bind_all(job.hash);
@@ -162,7 +164,7 @@ SubmitResult Store::submit(const Study& study, const ExpandedStudy& expanded, bo
     const std::string status = find_job.as_text(1);
     if (inserted)
       ++out.jobs_new;
-    else if (status == "done" && (!study.external() || counted.insert(job.hash).second))
+    else if (status == "done" && (!kind.job_serves_several_series() || counted.insert(job.hash).second))
       ++out.jobs_reused;
     requeue.reset();
     requeue.bind_all(job_id).run();

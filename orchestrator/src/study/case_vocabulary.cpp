@@ -6,11 +6,11 @@
 
 namespace gridfree {
 
-CaseVocabulary case_vocabulary(CaseKind kind, const std::string& h_meaning, const std::string& quantity_name,
+CaseVocabulary case_vocabulary(CaseKindId kind, const std::string& h_meaning, const std::string& quantity_name,
                                const std::string& quantity_meaning) {
   CaseVocabulary v;
   v.kind = kind;
-  if (kind == CaseKind::particle_bed) {
+  if (kind == CaseKindId::particle_bed) {
     v.h_symbol = "Δ*";
     v.h_meaning = "Δ* (cell size / particle diameter)";
     v.quantity_symbol = "DP*";
@@ -36,12 +36,12 @@ CaseVocabulary case_vocabulary(CaseKind kind, const std::string& h_meaning, cons
   return v;
 }
 
-CaseKind case_kind_of(const nlohmann::json& study_definition) {
+CaseKindId case_kind_id_of(const nlohmann::json& study_definition) {
   if (!study_definition.is_object() || !study_definition.contains("cases") || !study_definition["cases"].is_object() ||
       study_definition["cases"].empty())
-    return CaseKind::particle_bed;
+    return CaseKindId::particle_bed;
   const nlohmann::json c = resolved_case(study_definition, study_definition["cases"].begin().key());
-  return c.is_object() && c.contains("external") ? CaseKind::external : CaseKind::particle_bed;
+  return c.is_object() && c.contains("external") ? CaseKindId::external : CaseKindId::particle_bed;
 }
 
 }  // namespace gridfree

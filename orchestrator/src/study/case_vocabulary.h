@@ -22,10 +22,10 @@
 
 namespace gridfree {
 
-enum class CaseKind { particle_bed, external };
+enum class CaseKindId { particle_bed, external };
 
 struct CaseVocabulary {
-  CaseKind kind = CaseKind::particle_bed;
+  CaseKindId kind = CaseKindId::particle_bed;
   std::string h_symbol;          // "Δ*" | "h"
   std::string h_meaning;         // axis title: "Δ* (cell size / particle diameter)" | "h = 0.1 / N"
   std::string quantity_symbol;   // "DP*" | the quantity's name ("mean_u2")
@@ -41,11 +41,11 @@ struct CaseVocabulary {
 
 // The words of a kind of case; an external case's h and quantity meanings
 // are its declared ones (pass them; "" keeps the bare symbol).
-CaseVocabulary case_vocabulary(CaseKind kind, const std::string& h_meaning = {},
+CaseVocabulary case_vocabulary(CaseKindId kind, const std::string& h_meaning = {},
                                const std::string& quantity_name = {}, const std::string& quantity_meaning = {});
 
 // The kind of a study's cases from its definition as stored: external when
 // its first case (after "extends") has an "external" section.
-CaseKind case_kind_of(const nlohmann::json& study_definition);
+CaseKindId case_kind_id_of(const nlohmann::json& study_definition);
 
 }  // namespace gridfree

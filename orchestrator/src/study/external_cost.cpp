@@ -200,4 +200,18 @@ ExternalJobCost external_job_estimate(std::optional<double> cpu_s_per_cell, std:
   return out;
 }
 
+std::map<std::string, DeclaredCost> declared_external_costs(const nlohmann::json& definition) {
+  std::map<std::string, DeclaredCost> out;
+  if (!definition.is_object() || !definition.contains("cases") || !definition["cases"].is_object()) return out;
+  for (const auto& [name, c] : definition["cases"].items()) {
+    if (!c.is_object() || !c.contains("external")) continue;
+    DeclaredCost& d = out[name];
+    const auto cpu = nlohmann::json::json_pointer("/external/cost/cpu_s_per_cell");
+    const auto mb = nlohmann::json::json_pointer("/external/cost/mb_per_cell");
+    if (c.contains(cpu) && c.at(cpu).is_number()) d.cpu_s_per_cell = c.at(cpu).get<double>();
+    if (c.contains(mb) && c.at(mb).is_number()) d.mb_per_cell = c.at(mb).get<double>();
+  }
+  return out;
+}
+
 }  // namespace gridfree

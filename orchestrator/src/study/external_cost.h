@@ -24,6 +24,7 @@
 #pragma once
 
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,5 +64,12 @@ CostFit fit_memory_mb(const std::vector<CostSample>& samples, double cells);
 // case's measured samples (nullptr: none).
 ExternalJobCost external_job_estimate(std::optional<double> cpu_s_per_cell, std::optional<double> mb_per_cell,
                                       const std::vector<CostSample>* samples, double cells);
+
+// An external case's declared cost figures (external.cost).
+struct DeclaredCost {
+  std::optional<double> cpu_s_per_cell, mb_per_cell;
+};
+// Case name → its declared cost (only external cases; none declared: empty fields).
+std::map<std::string, DeclaredCost> declared_external_costs(const nlohmann::json& definition);
 
 }  // namespace gridfree

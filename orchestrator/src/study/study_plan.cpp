@@ -3,7 +3,7 @@
 #include "study/study_plan.h"
 
 #include "job/memory_estimate.h"
-#include "study/external_plan.h"
+#include "study/case_kind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +49,11 @@ static void add_job(PlanRow& row, const std::array<int, 3>& cells, const CostRat
 
 Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
                const CostHistory& history) {
-  if (study.external()) return make_external_plan(study, expanded, workers, cores, history);
+  return case_kind(study).plan(study, expanded, workers, cores, history);
+}
+
+Plan make_particle_bed_plan(const Study& /*study*/, const ExpandedStudy& expanded, int workers, int cores,
+                            const CostHistory& history) {
   Plan plan;
   plan.workers = std::max(1, workers);
   const int threads = std::max(1, cores / plan.workers);

@@ -74,9 +74,13 @@ struct Plan {
 };
 
 // `history`: finished jobs of a database (sched/cost_history.h), empty for
-// the a-priori model alone.
+// the a-priori model alone. The kind's plan (study/case_kind.h).
 Plan make_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
                const CostHistory& history = {});
+// A particle-bed study's plan (gridfree's cost model); an external study's
+// is study/external_plan.h's.
+Plan make_particle_bed_plan(const Study& study, const ExpandedStudy& expanded, int workers, int cores,
+                            const CostHistory& history);
 nlohmann::json plan_to_json(const Plan& plan);
 std::string plan_to_table(const Plan& plan);
 std::string human_bytes(double bytes);

@@ -122,7 +122,8 @@ TEST(SlurmScript, TheLimitsNoteSaysWhereTimeAndMemoryCameFrom) {
 // of different cores never share an array.
 TEST(SlurmScript, CoresRuleGivesEachArrayItsTasksOrCpus) {
   JobLaunch external;
-  external.external = true;
+  external.own_estimate = true;
+  external.cores_are_tasks = true;
   external.threads = 4;
   external.cores = 4;
   SlurmArray mpi;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// external_rungs (sched/adaptive_external.h).
-#include "sched/adaptive_external.h"
+// external_rungs (study/external_rungs.h).
+#include "study/external_rungs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@ namespace gridfree {
 
 ExternalRungs external_rungs(const nlohmann::json& definition, const AdaptiveGrids& settings,
                              const std::string& case_name, const nlohmann::json& first_spec,
-                             const std::vector<SeriesPoint>& points) {
+                             const CostHistory& measured) {
   ExternalRungs out;
   if (!settings.variable) return out;
   ProblemList ignored;  // the study was validated when it was submitted
@@ -23,12 +23,6 @@ ExternalRungs external_rungs(const nlohmann::json& definition, const AdaptiveGri
                                             nlohmann::json::object());
   const ExternalCase c = external_expressions(ext);
   const ExternalLadder ladder = external_ladder(c, *settings.variable, settings.ratio, case_name, ignored);
-  // The series' own finished jobs: the history an undeclared cost is fitted to.
-  CostHistory history;
-  for (const auto& p : points)
-    if (p.cpu_s > 0)
-      history[cost_similarity_key(first_spec)].push_back(
-          {static_cast<double>(p.cells[0]) * p.cells[1] * p.cells[2], p.cpu_s});
   const GridVariables& grids = ladder.variables;
   for (std::size_t k = 0; k < ladder.h_nominal.size(); ++k) {
     const ExternalGrid g = external_grid(c, grids, k);
@@ -43,7 +37,7 @@ ExternalRungs external_rungs(const nlohmann::json& definition, const AdaptiveGri
     r.delta_star = ladder.h_nominal[k];
     const double cells = g.cells ? std::max(1.0, std::round(*g.cells)) : 1.0;
     r.cells = {static_cast<int>(std::min(cells, 2.0e9)), 1, 1};
-    const ExternalJobCost cost = external_job_cost(c, spec, cells, history);
+    const ExternalJobCost cost = external_job_cost(c, spec, cells, measured);
     r.model_cpu_s = cost.cpu_s;
     r.memory_bytes = cost.memory_bytes;
     r.label = settings.variable->name + " = " + format_number("%.6g", grids.at(settings.variable->name)[k]) +

@@ -4,8 +4,8 @@
 // of study/external_ladder.h from the stored study definition, each rung's
 // job document (the series' first job with the rung's variables and grid),
 // and its cost by the external estimate (study/external_plan.h): the
-// declared cost.cpu_s_per_cell × cells, else a · cells^b fitted to the
-// series' own finished jobs; NaN (unknown) otherwise.
+// declared cost.cpu_s_per_cell × cells, else a · cells^b fitted to
+// `measured` (the series' own finished jobs); NaN (unknown) otherwise.
 #pragma once
 
 #include <string>
@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "store/store.h"
+#include "study/cost_model.h"
 #include "study/adaptive_rungs.h"
 
 namespace gridfree {
@@ -26,6 +26,6 @@ struct ExternalRungs {
 
 ExternalRungs external_rungs(const nlohmann::json& definition, const AdaptiveGrids& settings,
                              const std::string& case_name, const nlohmann::json& first_spec,
-                             const std::vector<SeriesPoint>& points);
+                             const CostHistory& measured);
 
 }  // namespace gridfree
