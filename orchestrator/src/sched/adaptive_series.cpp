@@ -13,7 +13,6 @@
 #include "sched/series_finish.h"
 #include "study/case_kind.h"
 #include "study/study_plan.h"
-#include "study/case_vocabulary.h"
 
 namespace gridfree {
 namespace {
@@ -93,8 +92,7 @@ bool decide_series(Store& store, const SeriesInfo& s, const AdaptiveGrids& setti
       WindowedFit w = windowed_extrapolation(h, f, extrapolate);  // the finest grids when the coarse spoil the fit
       ex = std::move(w.extrapolation);
       // The cell size in the case's own symbol (study/case_vocabulary.h).
-      window = window_sentence(
-          w, case_vocabulary(s.key.external() ? CaseKindId::external : CaseKindId::particle_bed).h_symbol);
+      window = window_sentence(w, case_kind(s.key).vocabulary().h_symbol);
     } catch (const std::exception& e) {
       ex = {{"status", std::string("error: ") + e.what()}};
     }

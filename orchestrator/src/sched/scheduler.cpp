@@ -151,6 +151,17 @@ std::string cpu_seconds_text(double s) {
 // "memory unknown (...)": why an external job's memory is not counted.
 std::string unknown_memory_note(const ExternalJobCost& c) { return "memory " + c.memory_basis; }
 
+// "estimated memory 200 MiB (basis); CPU 1.2 s (basis)", an unknown one as
+// its basis alone ("memory unknown (no cost.mb_per_cell …)"), never "nan MiB".
+std::string estimate_sentence(const ExternalJobCost& c) {
+  const std::string memory = std::isnan(c.memory_bytes)
+                                 ? unknown_memory_note(c)
+                                 : "estimated memory " + memory_text(c.memory_bytes) + " (" + c.memory_basis + ")";
+  const std::string cpu =
+      std::isfinite(c.cpu_s) ? "CPU " + cpu_seconds_text(c.cpu_s) + " (" + c.basis + ")" : "CPU " + c.basis;
+  return memory + "; " + cpu;
+}
+
 }  // namespace
 
 int recover_stale_jobs(Store& store) {
@@ -266,8 +277,7 @@ SchedulerSummary run_scheduler(Store& store, Executor& executor, const Scheduler
         spdlog::warn("{}: its estimated memory {} exceeds the memory budget {}; it runs alone", f.label,
                      memory_text(f.memory_bytes), memory_text(o.memory_budget_bytes));
       else if (cost)  // where an external job's estimates come from (study/external_cost.h)
-        spdlog::info("{}: estimated memory {} ({}); CPU {} ({})", f.label, memory_text(cost->memory_bytes),
-                     cost->memory_basis, cpu_seconds_text(cost->cpu_s), cost->basis);
+        spdlog::info("{}: {}", f.label, estimate_sentence(*cost));
       JobLaunch launch;
       launch.job_id = job->job_id;
       launch.job_hash = job->job_hash;

@@ -25,7 +25,7 @@
 #include "store/store_ensembles.h"
 #include "report/series_vocabulary.h"
 #include "study/adaptive_grids.h"
-#include "study/case_vocabulary.h"
+#include "study/case_kind.h"
 
 namespace gridfree {
 namespace {
@@ -110,7 +110,7 @@ std::vector<std::string> generator_kinds(const nlohmann::json& def) {
 ExtrapolatorSettings study_extrapolation_settings(Store& store, long long study_id) {
   ExtrapolatorSettings s;
   const auto def = store.study_definition(study_id);
-  s.h_symbol = case_vocabulary(case_kind_id_of(def)).h_symbol;
+  s.h_symbol = case_kind_of_definition(def).vocabulary().h_symbol;
   if (!def.is_object() || !def.contains("extrapolation")) return s;
   const auto& e = def["extrapolation"];
   if (e.contains("method") && e["method"].is_string()) s.method = e["method"].get<std::string>();
@@ -210,8 +210,7 @@ nlohmann::json finish_series(Store& store, const SeriesInfo& series, const Extra
     spdlog::warn("series {}: coverage self-check failed: {}", series.key.label(), e.what());
   }
   if (check)
-    demote_flagged_json(*check, h, ex,
-                        case_vocabulary(series.key.external() ? CaseKindId::external : CaseKindId::particle_bed).h_symbol);
+    demote_flagged_json(*check, h, ex, case_kind(series.key).vocabulary().h_symbol);
   std::vector<ExtrapolationRow> fits;
   std::vector<UncertaintyRow> unc;
   extrapolation_rows(ex, points, fits, unc);

@@ -45,6 +45,8 @@ class CaseKind {
 
   // Which words the reports use for it (study/case_vocabulary.h).
   virtual CaseKindId id() const = 0;
+  // Its words without a case's declared meanings: the cell-size symbol.
+  CaseVocabulary vocabulary() const { return case_vocabulary(id()); }
 
   // A running job's log label from its series' label (`k.label()`, with
   // " alignment" for an alignment variant), its document and cells.
