@@ -31,6 +31,8 @@ import os
 import sqlite3
 import subprocess
 import sys
+
+from corpus_file import corpus_text
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -131,9 +133,7 @@ def main():
                **common, "series": in_sample(series)}
     else:
         sys.exit("part must be held-out or in-sample, not %s" % part)
-    text = json.dumps({k: v for k, v in doc.items() if k != "series"}, indent=1, ensure_ascii=False)[:-2]
-    text += ',\n "series": [\n' + ",\n".join("  " + json.dumps(s, ensure_ascii=False) for s in doc["series"])
-    sys.stdout.write(text + "\n ]\n}\n")
+    sys.stdout.write(corpus_text(doc))
 
 
 if __name__ == "__main__":

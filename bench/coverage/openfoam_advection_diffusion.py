@@ -22,12 +22,13 @@
 #
 #   WM_PROJECT_DIR=/usr/share/openfoam bench/coverage/openfoam_advection_diffusion.py \
 #       > bench/coverage/corpus/openfoam_advection_diffusion.json
-import json
 import math
 import os
 import re
 import subprocess
 import sys
+
+from corpus_file import corpus_text
 import tempfile
 
 GRIDS = [10, 14, 20, 28, 40, 56, 80, 114, 160]
@@ -113,9 +114,7 @@ def main():
                      "T(1/2) = mean of the two cell values either side of x = 1/2.",
                      "vanLeer is a TVD limiter: no formal order is declared for it (formal_order null)."],
            "series": series}
-    text = json.dumps({k: v for k, v in doc.items() if k != "series"}, indent=1, ensure_ascii=False)[:-2]
-    text += ',\n "series": [\n' + ",\n".join("  " + json.dumps(s, ensure_ascii=False) for s in series)
-    sys.stdout.write(text + "\n ]\n}\n")
+    sys.stdout.write(corpus_text(doc))
 
 
 if __name__ == "__main__":

@@ -12,12 +12,13 @@
 # (formal order 2). Each run takes well under a second.
 #
 #   WM_PROJECT_DIR=/usr/share/openfoam bench/coverage/openfoam_conduction.py > bench/coverage/corpus/openfoam_conduction.json
-import json
 import math
 import os
 import re
 import subprocess
 import sys
+
+from corpus_file import corpus_text
 import tempfile
 
 GRIDS = [10, 14, 20, 28, 40, 56, 80, 113, 160]
@@ -93,9 +94,7 @@ def main():
            "notes": ["The initial field is sin(pi x) at cell centres; T(1/4) is interpolated linearly "
                      "between OpenFOAM's two cell values around x = 1/4."],
            "series": series}
-    text = json.dumps({k: v for k, v in doc.items() if k != "series"}, indent=1, ensure_ascii=False)[:-2]
-    text += ',\n "series": [\n' + ",\n".join("  " + json.dumps(s, ensure_ascii=False) for s in series)
-    sys.stdout.write(text + "\n ]\n}\n")
+    sys.stdout.write(corpus_text(doc))
 
 
 if __name__ == "__main__":
