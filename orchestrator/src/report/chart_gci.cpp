@@ -41,10 +41,8 @@ Chart gci_chart(const SeriesSummary& s, std::size_t index) {
   const CaseVocabulary words = series_vocabulary(s.series);
   chart.subtitle = "each consecutive triplet at its finest " + words.h_symbol +
                    ": φ_{1} ± GCI_{fine} (marker = convergence type) and φ_{ext}";
-  chart.x = delta_star_axis((words.kind == CaseKindId::external ? words.h_meaning : words.h_symbol) +
-                            " (finest grid of the triplet)");
-  chart.y = {words.kind == CaseKindId::external ? words.quantity_meaning : words.quantity_symbol, AxisScale::linear,
-             std::nullopt, std::nullopt};
+  chart.x = delta_star_axis(words.compact_h_axis + " (finest grid of the triplet)");
+  chart.y = {words.compact_value_axis, AxisScale::linear, std::nullopt, std::nullopt};
   if (!s.extrapolation || s.extrapolation->gci.empty()) return chart;
   const ExtrapolationView& e = *s.extrapolation;
   ChartSeries grids{"f_{i} ± U_{i} (regression)", {}, {}, {}, Marker::circle, false, false, true, 0};

@@ -9,6 +9,7 @@
 
 #include "report/chart_common.h"
 #include "extrap/value_format.h"
+#include "report/series_vocabulary.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -76,8 +77,8 @@ Chart series_chart(const SeriesSummary& s, std::size_t index) {
   Chart chart;
   chart.id = "fig1-" + series_slug(s, index);
   // An external series names its quantity and the meaning of its h (docs/EXTERNAL.md).
-  const bool external = !s.series.quantity.empty();
-  chart.title = (external ? s.series.quantity + " vs h: " : std::string("DP* vs Δ*: ")) + s.label + title_suffix(s);
+  const CaseVocabulary words = series_vocabulary(s.series);
+  chart.title = words.quantity_symbol + " vs " + words.h_symbol + ": " + s.label + title_suffix(s);
   chart.subtitle = fit_subtitle(s);
   chart.x = delta_star_axis(s.series.h_axis());
   chart.y = {s.series.value_axis(), AxisScale::linear, std::nullopt, std::nullopt};

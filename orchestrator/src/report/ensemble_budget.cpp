@@ -2,6 +2,8 @@
 // Uncertainty budget of an ensemble (see ensemble_budget.h).
 #include "report/ensemble_budget.h"
 
+#include <algorithm>
+
 #include "report/differences.h"
 #include "extrap/value_format.h"
 #include "report/text_format.h"
@@ -11,21 +13,26 @@ namespace gridfree {
 
 namespace {
 
-// Two external configurations of one quantity that differ in exactly one
-// factor's level: that factor and the two levels.
-std::optional<ModelFormDifference> external_level_difference(const EnsembleConfig& x, const EnsembleConfig& y) {
-  if (x.levels.size() != y.levels.size()) return std::nullopt;
+// Two configurations of one ensemble and quantity that differ in exactly
+// one factor, a model-form one of their case kind (CaseVocabulary::
+// model_form_factors; any factor when it names none): that factor and the
+// two levels.
+std::optional<ModelFormDifference> model_form_difference(const EnsembleConfig& x, const EnsembleConfig& y) {
+  if (x.ensemble != y.ensemble || x.quantity != y.quantity || x.factors.size() != y.factors.size())
+    return std::nullopt;
   std::optional<ModelFormDifference> out;
-  for (const auto& [name, level] : x.levels) {
-    const auto other = y.levels.find(name);
-    if (other == y.levels.end()) return std::nullopt;
-    if (other->second == level) continue;
+  for (std::size_t k = 0; k < x.factors.size(); ++k) {
+    const auto& [name, level] = x.factors[k];
+    if (y.factors[k].first != name) return std::nullopt;
+    if (y.factors[k].second == level) continue;
     if (out) return std::nullopt;  // a second factor differs
     out = ModelFormDifference{};
     out->factor = name;
     out->value_a = level;
-    out->value_b = other->second;
+    out->value_b = y.factors[k].second;
   }
+  const auto& model = x.vocabulary.model_form_factors;
+  if (out && !model.empty() && std::find(model.begin(), model.end(), out->factor) == model.end()) return std::nullopt;
   return out;
 }
 
@@ -37,27 +44,12 @@ std::vector<ModelFormDifference> model_form_differences(const std::vector<Ensemb
     for (std::size_t b = a + 1; b < configs.size(); ++b) {
       const auto& x = configs[a];
       const auto& y = configs[b];
-      if (x.ensemble != y.ensemble || x.quantity != y.quantity) continue;
-      if (x.external() || y.external()) {  // the study's own factors: exactly one level differs
-        if (auto d = external_level_difference(x, y)) {
-          d->a = a;
-          d->b = b;
-          if (x.f0 && y.f0) d->relative = relative_difference(x.f0->mean, y.f0->mean);
-          out.push_back(*d);
-        }
-        continue;
+      if (auto d = model_form_difference(x, y)) {
+        d->a = a;
+        d->b = b;
+        if (x.f0 && y.f0) d->relative = relative_difference(x.f0->mean, y.f0->mean);
+        out.push_back(*d);
       }
-      if (x.ensemble != y.ensemble || x.convection != y.convection || x.deposition != y.deposition) continue;
-      const bool drag = x.drag != y.drag, fwhm = x.fwhm_dp != y.fwhm_dp;
-      if (drag == fwhm) continue;  // neither or both differ
-      ModelFormDifference d;
-      d.a = a;
-      d.b = b;
-      d.factor = drag ? "drag" : "fwhm_dp";
-      d.value_a = drag ? x.drag : format_g(x.fwhm_dp, 10);
-      d.value_b = drag ? y.drag : format_g(y.fwhm_dp, 10);
-      if (x.f0 && y.f0) d.relative = relative_difference(x.f0->mean, y.f0->mean);
-      out.push_back(d);
     }
   }
   return out;
@@ -138,8 +130,7 @@ std::vector<std::string> budget_sentences(const std::vector<EnsembleConfig>& con
       while (j + 1 < mine.size() && mine[j + 1]->dominant == mine[i]->dominant) ++j;
       if (!first) text += "; ";
       first = false;
-      const std::string h =
-          case_vocabulary(configs[c].external() ? CaseKindId::external : CaseKindId::particle_bed).h_symbol + " ";
+      const std::string h = configs[c].vocabulary.h_symbol + " ";
       const std::string range = i == j ? "at " + h + format_cell_size(mine[i]->delta_star)
                                        : "for " + h + format_cell_size(mine[i]->delta_star) + "–" +
                                              format_cell_size(mine[j]->delta_star);

@@ -22,11 +22,10 @@ Chart ensemble_budget_chart(const std::string& ensemble, const std::vector<Ensem
   chart.id = "budget-" + slugify(ensemble);
   chart.title = "Uncertainty budget, ensemble " + ensemble;
   chart.subtitle = "discretization (mean RDE) vs model form and instance spread";
-  const bool external = std::any_of(configs.begin(), configs.end(), [&](const EnsembleConfig& c) {
-    return c.ensemble == ensemble && c.external();
-  });
-  chart.x = {case_vocabulary(external ? CaseKindId::external : CaseKindId::particle_bed).h_meaning, AxisScale::linear, 0.0,
-             std::nullopt};
+  const auto first = std::find_if(configs.begin(), configs.end(),
+                                  [&](const EnsembleConfig& c) { return c.ensemble == ensemble; });
+  const CaseVocabulary words = first != configs.end() ? first->vocabulary : case_vocabulary(CaseKindId::particle_bed);
+  chart.x = {words.h_meaning, AxisScale::linear, 0.0, std::nullopt};
   chart.y = {"relative size (%)", AxisScale::linear, 0.0, std::nullopt};
   int k = 0;
   for (std::size_t c = 0; c < configs.size(); ++c) {

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "report/differences.h"
+#include "report/series_vocabulary.h"
 #include "report/text_format.h"
 
 namespace gridfree {
@@ -84,6 +86,9 @@ std::vector<EnsembleConfig> ensemble_configs(const std::vector<SeriesSummary>& s
         c.deposition = dep;
         c.quantity = sd.quantity;
         c.levels = sd.levels;
+        c.factors = series_factors(sd);
+        c.factors.erase(c.factors.begin());  // the case: the instances differ in it
+        c.vocabulary = series_vocabulary(sd);
         out.push_back(c);
         it = out.end() - 1;
       }

@@ -17,9 +17,11 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/series_summary.h"
+#include "study/case_vocabulary.h"
 
 namespace gridfree {
 
@@ -48,6 +50,10 @@ struct EnsembleConfig {
   // ensembles"): its quantity and the study's own factor levels.
   std::string quantity{};
   std::map<std::string, std::string> levels{};
+  // Its factors (series_factors without the case) and its case's words
+  // (report/series_vocabulary.h), from its first instance.
+  std::vector<std::pair<std::string, std::string>> factors{};
+  CaseVocabulary vocabulary{};
   std::vector<std::size_t> members;   // indices into the summaries (instances with this configuration)
   std::vector<std::string> instances; // their case names
   int converged = 0;                  // members with verdict converged

@@ -14,14 +14,14 @@ namespace {
 // The averaging and budget rule; an external study's model form is a
 // difference in one of its own factors (report/ensemble_budget.h).
 std::string rule_text(const EnsembleSection& e) {
-  const bool external = !e.configs.empty() && e.configs.front().external();
-  const std::string h = case_vocabulary(external ? CaseKindId::external : CaseKindId::particle_bed).h_symbol;
+  const CaseVocabulary words = e.configs.empty() ? case_vocabulary(CaseKindId::particle_bed) : e.configs.front().vocabulary;
+  const std::string h = words.h_symbol;
   return "f0 is averaged over every instance that has one, whatever its verdict (a configuration where not every "
          "instance converged is flagged); U and RDE at a " + h + " over the instances with a value there. Spread: "
          "sample standard deviation s, standard error s/√n, min–max. Budget at each " + h + ": discretization = "
          "ensemble-mean RDE (a ~95 % bound), model form = the largest relative difference of the ensemble-mean "
          "f0 to a configuration differing only in " +
-         (external ? "one of the study's factors (same quantity)" : "drag law or filter width") +
+         words.model_form_rule +
          ", instance spread = s/|mean f0|; the largest of the three dominates.";
 }
 
@@ -78,9 +78,7 @@ Table ensemble_budget_table(const std::vector<EnsembleConfig>& configs, const st
   Table t;
   t.columns = {{"configuration", "Configuration"},
                {"delta_star",
-                case_vocabulary(!configs.empty() && configs.front().external() ? CaseKindId::external
-                                                                               : CaseKindId::particle_bed)
-                    .h_symbol,
+                (configs.empty() ? case_vocabulary(CaseKindId::particle_bed) : configs.front().vocabulary).h_symbol,
                 false, true},
                {"instances_with_u", "Instances", false, true},
                {"u_mean", "Mean U", false, true},

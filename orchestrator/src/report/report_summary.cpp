@@ -79,10 +79,9 @@ std::vector<VerdictItem> verdict_items(const ReportContent& c) {
 }
 
 std::string reading_note(const std::string& section, const CaseVocabulary& words) {
-  const bool external = words.kind == CaseKindId::external;
   if (section == "alignment.csv") return alignment_reading_note();
   if (section == "series.csv") {
-    return std::string("f0 is the extrapolated (grid-free) ") + (external ? "value of the series' quantity" : "DP*") +
+    return std::string("f0 is the extrapolated (grid-free) ") + words.value_noun +
            ". The power law f0 + c·h^p is used when its exponent is "
            "found inside the accepted range; with the methods averaged (the default) and capped an exponent above "
            "the range is capped at its upper end (f0 + c·h^p_high), otherwise the mixed-order fit f0 + c1·h + c2·h² "
@@ -141,7 +140,7 @@ std::string reading_note(const std::string& section, const CaseVocabulary& words
   }
   if (section == "grids.csv") {
     return std::string("Every job: U = Fs|f0 − f_i| + σ_RE is the uncertainty of its ") +
-           (external ? "value (h as the study declares it)" : "DP*") + ", RDE = U/|f0|.";
+           words.grid_value_noun + ", RDE = U/|f0|.";
   }
   if (section == "failures.csv") {
     return "Grids that finished without a usable value. They are left out of the fits and shown with "

@@ -98,8 +98,7 @@ std::string series_status(const SeriesSummary& s) {
 
 // An external study's series (docs/EXTERNAL.md): its own factor columns.
 bool all_external(const std::vector<SeriesSummary>& series) {
-  return !series.empty() && std::all_of(series.begin(), series.end(),
-                                        [](const SeriesSummary& s) { return !s.series.quantity.empty(); });
+  return !series.empty() && !study_vocabulary(series).particle_factors;
 }
 
 // The case's h and value columns: "delta_star" shown "Δ*", or "h".

@@ -20,6 +20,12 @@ CaseVocabulary case_vocabulary(CaseKindId kind, const std::string& h_meaning, co
     v.iteration = "outer iteration";
     v.iterations_counted = true;
     v.model_form = "drag law, filter width, particle configuration";
+    v.model_form_factors = {"drag", "fwhm_dp"};
+    v.model_form_rule = "drag law or filter width";
+    v.value_noun = v.quantity_symbol;
+    v.grid_value_noun = v.quantity_symbol;
+    v.compact_h_axis = v.h_symbol;
+    v.compact_value_axis = v.quantity_symbol;
     v.reference_rde = "FM18 found < 4% everywhere";
     return v;
   }
@@ -33,6 +39,11 @@ CaseVocabulary case_vocabulary(CaseKindId kind, const std::string& h_meaning, co
   v.particle_factors = false;
   v.iteration = "iteration";
   v.iterations_counted = false;  // the caller sets it from the results
+  v.model_form_rule = "one of the study's factors (same quantity)";
+  v.value_noun = "value of the series' quantity";
+  v.grid_value_noun = "value (h as the study declares it)";
+  v.compact_h_axis = v.h_meaning;
+  v.compact_value_axis = v.quantity_meaning;
   return v;
 }
 

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -36,6 +37,16 @@ struct CaseVocabulary {
   std::string iteration;         // "outer iteration" | "iteration"
   bool iterations_counted = true;  // results carry iteration counts (an external code's: when it reports them)
   std::string model_form;        // factors a study varies to see model form: "" when the case has none
+  // The factors whose one-level difference between two ensemble
+  // configurations is model form (empty: any one factor), and how the
+  // budget's rule names them.
+  std::vector<std::string> model_form_factors;
+  std::string value_noun;        // "DP*" | "value of the series' quantity"
+  std::string grid_value_noun;   // "DP*" | "value (h as the study declares it)"
+  // Axis titles where a chart is small (the GCI chart): the symbol where it
+  // is defined elsewhere in the report (Δ*, DP*), else the declared meaning.
+  std::string compact_h_axis, compact_value_axis;
+  std::string model_form_rule;   // "drag law or filter width" | "one of the study's factors (same quantity)"
   std::string reference_rde;     // a published RDE to compare with: "" when none applies
 };
 
