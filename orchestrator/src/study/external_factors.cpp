@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "core/json_fields.h"
+#include "study/design_baseline.h"
 #include "study/study.h"
 
 namespace gridfree {
@@ -66,13 +67,9 @@ void parse_external_factors(const json& doc, Study& s, ProblemList& problems) {
 }
 
 void parse_external_design(const json& doc, Study& s, ProblemList& problems) {
-  const auto d = doc.find("design");
-  if (d == doc.end() || (d->is_string() && *d == "factorial")) return;
-  if (!d->is_object() || !d->contains("one_at_a_time") || !(*d)["one_at_a_time"].is_object()) {
-    problems.add_once("/design", "must be \"factorial\" or {\"one_at_a_time\": {baseline}}");
-    return;
-  }
-  const json& b = (*d)["one_at_a_time"];
+  const json* baseline = one_at_a_time_baseline(doc, problems);
+  if (baseline == nullptr) return;
+  const json& b = *baseline;
   const std::string at = "/design/one_at_a_time";
   SeriesKey key;
   key.case_name = s.cases.empty() ? "" : s.cases.front().name;

@@ -2,7 +2,6 @@
 // gridfree's own case, a particle bed solved by gridfree-worker
 // (study/case_kind.h): factors convection, fwhm_dp, drag and deposition,
 // one series per configuration (its quantity dp*), grids in Δ*.
-#include <cmath>
 #include <cstdio>
 
 #include "study/case_kind.h"
@@ -67,13 +66,12 @@ class ParticleBedKind final : public CaseKind {
                              const CostHistory& /*measured*/) const override {
     KindLadder out;
     const auto domain = domain_of(first_spec);
-    const double volume = domain[0] * domain[1] * domain[2];
     out.rungs = adaptive_rungs(gridfree::adaptive_ladder(settings), domain);
     for (const auto& rung : out.rungs) {
       nlohmann::json spec = first_spec;
       spec["numerics"]["grid"] = {{"cells", {rung.cells[0], rung.cells[1], rung.cells[2]}}};
       out.specs.push_back(std::move(spec));
-      out.h.push_back(std::cbrt(volume / (static_cast<double>(rung.cells[0]) * rung.cells[1] * rung.cells[2])));
+      out.h.push_back(delta_star_of(domain, rung.cells));
     }
     return out;
   }

@@ -23,6 +23,7 @@
 #include "study/case_extends.h"
 #include "study/external_factors.h"
 #include "study/slurm_block.h"
+#include "study/design_baseline.h"
 #include "study/study.h"
 #include "study/study_alignment.h"
 #include "study/study_plan.h"
@@ -173,13 +174,9 @@ bool contains(const std::vector<T>& v, const T& x) {
 }
 
 void parse_design(const json& doc, Study& s, ProblemList& problems) {
-  auto d = doc.find("design");
-  if (d == doc.end() || (d->is_string() && *d == "factorial")) return;
-  if (!d->is_object() || !d->contains("one_at_a_time") || !(*d)["one_at_a_time"].is_object()) {
-    problems.add_once("/design", "must be \"factorial\" or {\"one_at_a_time\": {baseline}}");
-    return;
-  }
-  const json& b = (*d)["one_at_a_time"];
+  const json* baseline = one_at_a_time_baseline(doc, problems);
+  if (baseline == nullptr) return;
+  const json& b = *baseline;
   const std::string at = "/design/one_at_a_time";
   SeriesKey key;
   key.case_name = s.cases.empty() ? "" : s.cases.front().name;

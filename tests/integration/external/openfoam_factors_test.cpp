@@ -28,6 +28,7 @@
 #include "project_paths.h"
 #include "run_command.h"
 #include "scratch_dir.h"
+#include "test_files.h"
 
 namespace openfoam_factors_test {
 
@@ -60,13 +61,6 @@ std::size_t line_count(const fs::path& f) {
   std::size_t n = 0;
   for (std::string line; std::getline(in, line);) ++n;
   return n;
-}
-
-std::string file_text(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 class OpenFoamFactors : public ::testing::Test {
@@ -121,27 +115,27 @@ TEST_F(OpenFoamFactors, SchemeFactorAndDiffusivityEnsembleEndToEnd) {
   EXPECT_EQ(checked, 6) << rows;
   // The report: one-factor differences of the scheme (one per instance) and the budget.
   const auto report = dir / "reports/external_scalar_transport";
-  const std::string differences = file_text(report / "differences.csv");
+  const std::string differences = ts::slurp(report / "differences.csv");
   std::size_t scheme_rows = 0;
   for (std::size_t at = differences.find("\nscheme,Gauss upwind,Gauss linear,"); at != std::string::npos;
        at = differences.find("\nscheme,Gauss upwind,Gauss linear,", at + 1))
     ++scheme_rows;
   EXPECT_EQ(scheme_rows, 3u) << differences;
   // series.csv names the case, the quantity, a column per factor and the levels, no particle-bed column.
-  const std::string series_csv = file_text(report / "series.csv");
+  const std::string series_csv = ts::slurp(report / "series.csv");
   const std::string header = series_csv.substr(0, series_csv.find('\n'));
   EXPECT_NE(header.find(",case,quantity,scheme,levels,"), std::string::npos) << header;
   EXPECT_EQ(header.find("fwhm_dp"), std::string::npos) << header;
   EXPECT_NE(series_csv.find(",pe10,T_mean,Gauss linear,"), std::string::npos) << series_csv;
-  const std::string budget = file_text(report / "budget.csv");
+  const std::string budget = ts::slurp(report / "budget.csv");
   EXPECT_NE(budget.find("diffusivity: scheme=Gauss linear T_mean"), std::string::npos) << budget;
   EXPECT_NE(budget.find("scheme Gauss upwind vs Gauss linear"), std::string::npos) << budget;
-  EXPECT_NE(file_text(report / "report.md").find("differing only in one of the study's factors"), std::string::npos);
+  EXPECT_NE(ts::slurp(report / "report.md").find("differing only in one of the study's factors"), std::string::npos);
   // What a person reads speaks the case's words: no particle-bed term
   // (study/case_vocabulary.h), ensemble section and budget chart included.
   for (const char* page : {"report.md", "report.html", "budget_diffusivity.svg"})
     for (const char* word : {"Δ*", "particle", "drag", "filter width", "FM18", "DP*", "outer iteration", "ε_s"})
-      EXPECT_EQ(file_text(report / page).find(word), std::string::npos) << page << ": " << word;
+      EXPECT_EQ(ts::slurp(report / page).find(word), std::string::npos) << page << ": " << word;
   EXPECT_EQ(ts::sqlite_query(db, "SELECT COUNT(DISTINCT levels) || ' ' || MIN(instances) FROM v_ensemble_budget"),
             "2 3");
   // A rerun reuses every job.
